@@ -1,0 +1,358 @@
+#include "app/config.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "geometry/build_liner_surface.h"
+#include "geometry/errors.h"
+#include "geometry/measured_profile.h"
+#include "geometry/metrics.h"
+
+namespace linerlife {
+
+extern const char* const kBundledDefaultConfig;  // generated from data/mills/qiu2001_sag.toml
+
+namespace {
+
+std::string format_number(double v) {
+  std::string s = fmt::format("{}", v);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string format_value(const ConfigValue& v) {
+  switch (v.kind) {
+    case ConfigValue::Kind::Real: return format_number(v.real);
+    case ConfigValue::Kind::Int: return fmt::format("{}", v.integer);
+    case ConfigValue::Kind::String: {
+      std::string out = "\"";
+      for (char c : v.text) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+      }
+      return out + "\"";
+    }
+  }
+  return "";
+}
+
+const char* kind_name(ConfigValue::Kind k) {
+  switch (k) {
+    case ConfigValue::Kind::Real: return "a number";
+    case ConfigValue::Kind::Int: return "an integer";
+    case ConfigValue::Kind::String: return "a string";
+  }
+  return "";
+}
+
+std::string node_text(const toml::node& n) {
+  std::ostringstream ss;
+  n.visit([&](auto&& v) {
+    using T = std::decay_t<decltype(v)>;
+    if constexpr (std::is_same_v<T, toml::value<std::string>>) ss << '"' << v.get() << '"';
+    else if constexpr (toml::is_value<T>) ss << v.get();
+    else if constexpr (std::is_same_v<T, toml::table>) ss << "(a table)";
+    else ss << "(an array)";
+  });
+  std::string t = ss.str();
+  if (t.size() > 60) t = t.substr(0, 57) + "...";
+  return t;
+}
+
+bool in_range(const KeySpec& k, double v) {
+  if (!std::isfinite(v)) return false;
+  if (k.lo_open ? !(v > k.lo) : !(v >= k.lo)) return false;
+  if (k.hi_open ? !(v < k.hi) : !(v <= k.hi)) return false;
+  return true;
+}
+
+}  // namespace
+
+std::string KeySpec::allowed() const {
+  if (kind == ConfigValue::Kind::String) {
+    if (choices.empty()) return "a string";
+    std::string s = "one of ";
+    for (size_t i = 0; i < choices.size(); ++i) s += (i ? ", \"" : "\"") + choices[i] + "\"";
+    return s;
+  }
+  const bool has_lo = lo > -1e299, has_hi = hi < 1e299;
+  const std::string u = unit.empty() || unit == "-" ? "" : " " + unit;
+  if (has_lo && has_hi)
+    return fmt::format("{} {} value {} {}{}", lo, lo_open ? "<" : "<=", hi_open ? "<" : "<=", hi, u);
+  if (has_lo) return fmt::format("value {} {}{}", lo_open ? ">" : ">=", lo, u);
+  if (has_hi) return fmt::format("value {} {}{}", hi_open ? "<" : "<=", hi, u);
+  return "any number";
+}
+
+const KeySpec* Schema::find(const std::string& section, const std::string& name) const {
+  for (const auto& k : keys)
+    if (k.section == section && k.name == name) return &k;
+  return nullptr;
+}
+
+const Schema& config_schema() {
+  static const Schema schema = [] {
+    Schema s;
+    add_mill_keys(s);
+    add_charge_keys(s);
+    add_liner_keys(s);
+    add_model_keys(s);
+    return s;
+  }();
+  return schema;
+}
+
+std::string config_location(const Config& c, const std::string& key) {
+  auto it = c.key_lines.find(key);
+  if (it != c.key_lines.end()) return fmt::format("{}:{}: ", c.source, it->second);
+  const auto dot = key.find('.');
+  if (dot != std::string::npos) {
+    auto st = c.section_lines.find(key.substr(0, dot));
+    if (st != c.section_lines.end() && st->second > 0) return fmt::format("{}:{}: ", c.source, st->second);
+  }
+  return c.source + ": ";
+}
+
+namespace {
+
+/// Rethrows an InputError from a later check with the location of its key.
+[[noreturn]] void fail_at(const Config& c, const std::string& key, const std::string& message) {
+  throw InputError(key, config_location(c, key) + message);
+}
+
+/// The cross-key rules and the physical checks that need the geometry.
+void check_and_resolve(Config& c) {
+  // speed: exactly one of the two keys
+  if (c.speed_rpm.has_value() == c.speed_fraction_critical.has_value())
+    fail_at(c, "mill.speed_rpm",
+            c.speed_rpm ? "give exactly one of [mill] speed_rpm and speed_fraction_critical, not both"
+                        : "missing key [mill] speed_rpm or speed_fraction_critical (give exactly one)");
+  if (c.charge.ball_filling > c.charge.filling)
+    fail_at(c, "charge.ball_filling",
+            fmt::format("ball_filling = {} is larger than filling = {}: the balls are part of the charge, so "
+                        "0 <= ball_filling <= filling",
+                        c.charge.ball_filling, c.charge.filling));
+
+  // liner design
+  LinerDesign& L = c.liner;
+  L.measured = !c.profile_csv.empty();
+  const char* parametric[] = {"plate_thickness_m", "lifter_height_m", "lifter_top_width_m",
+                              "face_angle_leading_deg", "face_angle_trailing_deg"};
+  if (!L.measured)
+    for (const char* k : parametric)
+      if (!c.key_lines.count(std::string("liner.") + k))
+        fail_at(c, std::string("liner.") + k,
+                fmt::format("missing key [liner] {} (required unless profile_csv gives a measured profile)", k));
+  if (c.pattern == "hi-lo") {
+    if (L.measured) fail_at(c, "liner.pattern", "pattern = \"hi-lo\" cannot be combined with profile_csv");
+    for (const char* k : {"low_lifter_height_m", "low_lifter_top_width_m"})
+      if (!c.key_lines.count(std::string("liner.") + k))
+        fail_at(c, std::string("liner.") + k, fmt::format("missing key [liner] {} (required by pattern = \"hi-lo\")", k));
+    L.hi_lo = true;
+    L.low = L.design;
+    L.low.lifter_height_m = *c.low_lifter_height_m;
+    L.low.top_width_m = *c.low_lifter_top_width_m;
+  } else {
+    for (const char* k : {"low_lifter_height_m", "low_lifter_top_width_m"})
+      if (c.key_lines.count(std::string("liner.") + k))
+        fail_at(c, std::string("liner.") + k, fmt::format("{} applies only with pattern = \"hi-lo\"", k));
+  }
+  if (L.measured) {
+    namespace fs = std::filesystem;
+    fs::path p(c.profile_csv);
+    if (p.is_relative()) p = fs::path(c.base_dir) / p;
+    try {
+      L.profile = load_profile_csv(p.string());
+      validate_measured_profile(L.profile, c.mill.shell_radius_m(), L.segments);
+    } catch (const InputError& e) {
+      fail_at(c, "liner.profile_csv", e.what());
+    }
+  }
+
+  // Geometry: building the ring runs every check of the design.
+  Mill m = c.mill;
+  m.speed_rpm = c.speed_rpm.value_or(1.0);
+  LinerSurface surface;
+  try {
+    surface = build_liner_surface(m, L);
+  } catch (const InputError& e) {
+    fail_at(c, e.key(), e.what());
+  }
+  const LinerMetrics lm = metrics(surface, m.rotation, L.density_kg_m3);
+  const double nc = critical_speed_rpm(lm.effective_diameter_m);
+  if (c.speed_fraction_critical) {
+    c.mill.speed_rpm = *c.speed_fraction_critical * nc;
+  } else {
+    c.mill.speed_rpm = *c.speed_rpm;
+    const double phi = c.mill.speed_rpm / nc;
+    if (phi >= 1.0)
+      fail_at(c, "mill.speed_rpm",
+              fmt::format("speed_rpm = {} is {:.3f} of the critical speed ({:.3f} rpm for the diameter inside the "
+                          "liners, {:.4f} m): at or above critical the charge centrifuges; allowed 0 < speed_rpm < "
+                          "{:.3f}",
+                          c.mill.speed_rpm, phi, nc, lm.effective_diameter_m, nc));
+  }
+  // Media must fit between two lifters (the gap at the plate).
+  if (!L.measured && L.design.lifter_height_m > 0) {
+    const double R = c.mill.shell_radius_m();
+    const double rp = R - L.design.plate_thickness_m;
+    // the base of lifter 0 ends where the thickness first exceeds the plate level
+    double half_base = 0;
+    for (int i = surface.segment_begin[0]; i < surface.segment_begin[1]; ++i) {
+      const auto& q = surface.nodes[i];
+      if (R - q.norm() > L.design.plate_thickness_m + 1e-9)
+        half_base = std::max(half_base, std::abs(std::atan2(q.y(), q.x())));
+    }
+    const double gap = (surface.segment_angle_rad() - 2 * half_base) * rp;
+    if (c.charge.ball_diameter_m >= gap)
+      fail_at(c, "charge.ball_diameter_m",
+              fmt::format("ball_diameter_m = {} m is larger than the spacing between lifters at the plate ({:.4g} m "
+                          "for {} rows): the media cannot sit between the lifters",
+                          c.charge.ball_diameter_m, gap, L.segments));
+  }
+}
+
+}  // namespace
+
+Config load_config_text(const std::string& text, const std::string& source, const std::string& base_dir) {
+  Config c;
+  c.source = source;
+  c.base_dir = base_dir;
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw InputError(source, fmt::format("{}:{}: TOML syntax error: {}", source, e.source().begin.line,
+                                         std::string(e.description())));
+  }
+  const Schema& schema = config_schema();
+  std::set<std::string> known_sections(schema.sections.begin(), schema.sections.end());
+
+  for (auto&& [skey, snode] : root) {
+    const std::string sname(skey.str());
+    const int sline = static_cast<int>(snode.source().begin.line);
+    if (!known_sections.count(sname)) {
+      std::string list;
+      for (auto& s : schema.sections) list += (list.empty() ? "[" : ", [") + s + "]";
+      throw InputError(sname, fmt::format("{}:{}: unknown section or top-level key \"{}\"; the sections are {}", source,
+                                          sline, sname, list));
+    }
+    const toml::table* t = snode.as_table();
+    if (!t) throw InputError(sname, fmt::format("{}:{}: \"{}\" must be a section [{}]", source, sline, sname, sname));
+    c.section_lines[sname] = sline;
+    for (auto&& [kkey, knode] : *t) {
+      const std::string kname(kkey.str());
+      const int line = static_cast<int>(knode.source().begin.line);
+      const KeySpec* spec = schema.find(sname, kname);
+      const std::string full = sname + "." + kname;
+      if (!spec) {
+        std::string list;
+        for (const auto& k : schema.keys)
+          if (k.section == sname) list += (list.empty() ? "" : ", ") + k.name;
+        throw InputError(full, fmt::format("{}:{}: unknown key [{}] {} (a misspelling?); the keys of [{}] are: {}",
+                                           source, line, sname, kname, sname, list.empty() ? "(none yet)" : list));
+      }
+      ConfigValue v;
+      bool ok = false;
+      switch (spec->kind) {
+        case ConfigValue::Kind::Real:
+          if (auto f = knode.as_floating_point()) { v = ConfigValue::Real(f->get()); ok = true; }
+          else if (auto i = knode.as_integer()) { v = ConfigValue::Real(static_cast<double>(i->get())); ok = true; }
+          break;
+        case ConfigValue::Kind::Int:
+          if (auto i = knode.as_integer()) { v = ConfigValue::Int(i->get()); ok = true; }
+          break;
+        case ConfigValue::Kind::String:
+          if (auto s = knode.as_string()) { v = ConfigValue::String(s->get()); ok = true; }
+          break;
+      }
+      if (!ok)
+        throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: expected {} ({})", source, line, sname, kname,
+                                           node_text(knode), kind_name(spec->kind), spec->allowed()));
+      const double num = spec->kind == ConfigValue::Kind::Int ? static_cast<double>(v.integer) : v.real;
+      if (spec->kind != ConfigValue::Kind::String && !in_range(*spec, num))
+        throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: out of range; allowed {}", source, line, sname, kname,
+                                           node_text(knode), spec->allowed()));
+      if (spec->kind == ConfigValue::Kind::String && !spec->choices.empty()) {
+        bool found = false;
+        for (auto& ch : spec->choices) found |= ch == v.text;
+        if (!found)
+          throw InputError(full, fmt::format("{}:{}: [{}] {} = \"{}\": allowed {}", source, line, sname, kname, v.text,
+                                             spec->allowed()));
+      }
+      c.key_lines[full] = line;
+      spec->set(c, v);
+    }
+  }
+  // absent keys: defaults, or an error for required ones
+  for (const auto& k : schema.keys) {
+    if (c.key_lines.count(k.full_name())) continue;
+    if (k.required)
+      throw InputError(k.full_name(), fmt::format("{}{}missing required key [{}] {} ({}; allowed {})", source,
+                                                  c.section_lines.count(k.section)
+                                                      ? fmt::format(":{}: ", c.section_lines[k.section])
+                                                      : ": ",
+                                                  k.section, k.name, k.help, k.allowed()));
+    if (k.default_value) k.set(c, *k.default_value);
+  }
+  check_and_resolve(c);
+  return c;
+}
+
+Config load_config_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path, fmt::format("configuration file {} does not exist", path));
+  if (fs::is_directory(path, ec))
+    throw InputError(path, fmt::format("configuration file {} is a directory, not a TOML file", path));
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError(path, fmt::format("configuration file {} cannot be read (permissions?)", path));
+  std::stringstream ss;
+  ss << f.rdbuf();
+  if (f.bad()) throw InputError(path, fmt::format("configuration file {} cannot be read", path));
+  const fs::path base = fs::path(path).parent_path();
+  return load_config_text(ss.str(), path, base.empty() ? "." : base.string());
+}
+
+const std::string& default_config_text() {
+  static const std::string text(kBundledDefaultConfig);
+  return text;
+}
+
+Config load_default_config() {
+  return load_config_text(default_config_text(), "bundled qiu2001_sag.toml", ".");
+}
+
+std::string config_to_toml(const Config& c, bool annotate) {
+  const Schema& schema = config_schema();
+  std::string out;
+  if (annotate)
+    out += "# linerlife configuration: every key with its unit and allowed range.\n"
+           "# SI units throughout; the key names carry the unit. Edit a copy and run\n"
+           "#   linerlife <command> your.toml\n";
+  for (const auto& sec : schema.sections) {
+    out += fmt::format("\n[{}]\n", sec);
+    for (const auto& k : schema.keys) {
+      if (k.section != sec) continue;
+      const auto v = k.get(c);
+      if (annotate) {
+        out += fmt::format("# {}", k.help);
+        if (!k.unit.empty() && k.unit != "-") out += fmt::format(" [{}]", k.unit);
+        out += fmt::format(". Allowed: {}.{}\n", k.allowed(), k.required ? " Required." : "");
+      }
+      if (v)
+        out += fmt::format("{} = {}\n", k.name, format_value(*v));
+      else if (annotate)
+        out += fmt::format("# {} = ...{}\n", k.name, k.alternative_note.empty() ? "" : "  (" + k.alternative_note + ")");
+    }
+  }
+  return out;
+}
+
+}  // namespace linerlife

@@ -1,0 +1,45 @@
+// linerlife - forecasts when the shell liners and lifters of a tumbling mill
+// must be replaced. Exit codes (DESIGN.md §4): 0 success, 2 invalid input,
+// 3 simulation failure, 1 internal error.
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.h"
+#include "geometry/errors.h"
+
+using namespace linerlife;
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "linerlife: forecast of tumbling-mill liner wear and the relining date.\n"
+      "Every command without a CONFIG file runs the bundled Qiu (2001) SAG mill."};
+  app.set_version_flag("--version", program_version());
+  app.require_subcommand(1);
+
+  // The subcommands, in the order `--help` lists them.
+  const RegisterCommand commands[] = {register_defaults, register_geometry};
+  std::function<int()> run;
+  for (RegisterCommand reg : commands) reg(app, run);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::cerr << "linerlife: error: " << e.what() << "\n(run `linerlife --help` for the commands and options)\n";
+    return kExitInput;
+  }
+  try {
+    return run ? run() : kExitInput;
+  } catch (const InputError& e) {
+    std::cerr << "linerlife: error: " << e.what() << "\n";
+    return kExitInput;
+  } catch (const SimulationError& e) {
+    std::cerr << "linerlife: simulation failed: " << e.what() << "\n";
+    return kExitSimulation;
+  } catch (const std::exception& e) {
+    std::cerr << "linerlife: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
+}

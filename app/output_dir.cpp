@@ -1,0 +1,62 @@
+#include "app/output_dir.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "geometry/errors.h"
+
+namespace linerlife {
+
+namespace fs = std::filesystem;
+
+void check_output_dir_writable(const std::string& dir) {
+  std::error_code ec;
+  fs::path p = fs::absolute(dir, ec);
+  if (fs::exists(p, ec)) {
+    if (!fs::is_directory(p, ec)) throw InputError(dir, fmt::format("output folder {} exists and is not a folder", dir));
+    if (access(p.c_str(), W_OK | X_OK) != 0)
+      throw InputError(dir, fmt::format("output folder {} cannot be written (permissions)", dir));
+    return;
+  }
+  fs::path parent = p.parent_path();
+  while (!parent.empty() && !fs::exists(parent, ec)) parent = parent.parent_path();
+  if (parent.empty() || !fs::is_directory(parent, ec) || access(parent.c_str(), W_OK | X_OK) != 0)
+    throw InputError(dir, fmt::format("output folder {} cannot be created: {} is not writable", dir,
+                                      parent.empty() ? std::string("its parent") : parent.string()));
+}
+
+void OutputDir::prepare() {
+  check_output_dir_writable(dir_);
+  std::error_code ec;
+  fs::create_directories(dir_, ec);
+  if (ec) throw InputError(dir_, fmt::format("output folder {} cannot be created: {}", dir_, ec.message()));
+}
+
+std::string OutputDir::path(const std::string& name) const { return (fs::path(dir_) / name).string(); }
+
+std::string OutputDir::temp_path(const std::string& name) const {
+  return (fs::path(dir_) / fmt::format(".{}.tmp.{}", name, static_cast<long>(getpid()))).string();
+}
+
+void OutputDir::commit(const std::string& temp, const std::string& name) const {
+  std::error_code ec;
+  fs::rename(temp, path(name), ec);
+  if (ec) throw std::runtime_error(fmt::format("cannot rename {} to {}: {}", temp, path(name), ec.message()));
+}
+
+void OutputDir::write_text(const std::string& name, const std::string& text) const {
+  const std::string tmp = temp_path(name);
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    f << text;
+    f.flush();
+    if (!f) throw std::runtime_error(fmt::format("cannot write {}", tmp));
+  }
+  commit(tmp, name);
+}
+
+}  // namespace linerlife

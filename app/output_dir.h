@@ -1,0 +1,36 @@
+// output_dir.h - the --out folder. Nothing is created before the input has
+// been checked; every file is written under a temporary name in the folder
+// and renamed into place when complete, so a crash never leaves a
+// half-written result.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace linerlife {
+
+class OutputDir {
+ public:
+  explicit OutputDir(std::string dir) : dir_(std::move(dir)) {}
+  /// Creates the folder (and parents) and checks it can be written; throws
+  /// InputError naming the folder when it cannot.
+  void prepare();
+  /// A temporary path in the folder for the file `name` (".name.tmp.PID").
+  std::string temp_path(const std::string& name) const;
+  /// Renames the finished temporary file to its final name (atomic on POSIX).
+  void commit(const std::string& temp, const std::string& name) const;
+  /// Writes `text` to `name` atomically.
+  void write_text(const std::string& name, const std::string& text) const;
+  std::string path(const std::string& name) const;
+  const std::string& dir() const { return dir_; }
+
+ private:
+  std::string dir_;
+};
+
+/// Checks before any work starts that `dir` could be created and written
+/// (an existing folder must be writable; otherwise its nearest existing
+/// parent must be). Throws InputError; creates nothing.
+void check_output_dir_writable(const std::string& dir);
+
+}  // namespace linerlife

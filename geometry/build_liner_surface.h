@@ -1,0 +1,33 @@
+// build_liner_surface.h - LinerDesign -> LinerSurface (DESIGN.md §2).
+#pragma once
+
+#include "geometry/lifter_design.h"
+#include "geometry/liner_surface.h"
+#include "geometry/mill.h"
+
+namespace linerlife {
+
+/// Builds the whole ring of liners for `mill` from `design`, with surface
+/// elements no longer than design.element_size_m. The leading face of a
+/// parametric lifter faces the mill's direction of rotation; a measured
+/// profile is placed as given (its x runs anticlockwise).
+///
+/// Throws InputError (naming the liner.* key, the value and what is allowed)
+/// for designs that cannot be built: a lifter taller than a quarter of the
+/// shell radius, a top or base wider than its segment, face angles outside
+/// [0, 80) deg, a fillet that does not fit, elements too coarse to resolve the
+/// lifter.
+LinerSurface build_liner_surface(const Mill& mill, const LinerDesign& design);
+
+/// The profile of one segment centred on angle 0 (the +x axis), nodes in
+/// anticlockwise order from the radial line at -pi/segments to the one at
+/// +pi/segments, both ends included. Used by build_liner_surface.
+std::vector<Eigen::Vector2d> segment_profile(const Mill& mill, const LinerDesign& design, int which_design);
+
+/// Checks a parametric design against the shell and the segment (the checks
+/// listed for build_liner_surface). `prefix` names the keys ("liner." or
+/// "liner.low_").
+void validate_lifter_design(const Mill& mill, int segments, const LifterDesign& d, double element_size_m,
+                            const char* prefix);
+
+}  // namespace linerlife

@@ -1,0 +1,182 @@
+#include "geometry/measured_profile.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "geometry/errors.h"
+#include "geometry/mill.h"
+
+namespace linerlife {
+namespace {
+
+using V = Eigen::Vector2d;
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+
+bool parse_double(const std::string& s, double& out) {
+  const std::string t = trim(s);
+  if (t.empty()) return false;
+  try {
+    size_t pos = 0;
+    out = std::stod(t, &pos);
+    return pos == t.size();
+  } catch (...) {
+    return false;
+  }
+}
+
+double cross(const V& a, const V& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+bool segments_intersect(const V& p1, const V& p2, const V& q1, const V& q2) {
+  const double d1 = cross(p2 - p1, q1 - p1), d2 = cross(p2 - p1, q2 - p1);
+  const double d3 = cross(q2 - q1, p1 - q1), d4 = cross(q2 - q1, p2 - q1);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+  auto on_seg = [](const V& a, const V& b, const V& p) {
+    return std::abs(cross(b - a, p - a)) <= 1e-14 * (b - a).squaredNorm() &&
+           p.x() >= std::min(a.x(), b.x()) - 1e-15 && p.x() <= std::max(a.x(), b.x()) + 1e-15 &&
+           p.y() >= std::min(a.y(), b.y()) - 1e-15 && p.y() <= std::max(a.y(), b.y()) + 1e-15;
+  };
+  return on_seg(p1, p2, q1) || on_seg(p1, p2, q2) || on_seg(q1, q2, p1) || on_seg(q1, q2, p2);
+}
+
+}  // namespace
+
+bool polyline_self_intersects(const std::vector<V>& pts) {
+  const int n = static_cast<int>(pts.size());
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = i + 2; j + 1 < n; ++j)
+      if (segments_intersect(pts[i], pts[i + 1], pts[j], pts[j + 1])) return true;
+  return false;
+}
+
+MeasuredProfile parse_profile_csv(const std::string& text, const std::string& source) {
+  MeasuredProfile p;
+  p.source = source;
+  std::istringstream in(text);
+  std::string line;
+  int lineno = 0;
+  bool header_allowed = true;
+  while (std::getline(in, line)) {
+    ++lineno;
+    const std::string t = trim(line);
+    if (t.empty() || t[0] == '#') continue;
+    const auto comma = t.find(',');
+    if (comma == std::string::npos)
+      throw InputError(source, fmt::format("{}:{}: expected two comma-separated numbers \"x_m,y_m\", got \"{}\"",
+                                           source, lineno, t));
+    const std::string a = t.substr(0, comma), b = t.substr(comma + 1);
+    double x = 0, y = 0;
+    if (!parse_double(a, x) || !parse_double(b, y)) {
+      if (header_allowed && trim(a) == "x_m" && trim(b) == "y_m") {
+        header_allowed = false;
+        continue;
+      }
+      throw InputError(source, fmt::format("{}:{}: \"{}\" is not a pair of numbers x_m,y_m (metres)", source,
+                                           lineno, t));
+    }
+    header_allowed = false;
+    if (!std::isfinite(x) || !std::isfinite(y))
+      throw InputError(source, fmt::format("{}:{}: non-finite value in \"{}\"", source, lineno, t));
+    p.points.emplace_back(x, y);
+  }
+  if (p.points.size() < 3)
+    throw InputError(source, fmt::format("{}: a profile needs at least 3 points, found {}", source, p.points.size()));
+  return p;
+}
+
+MeasuredProfile load_profile_csv(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path, fmt::format("profile file {} does not exist", path));
+  if (fs::is_directory(path, ec)) throw InputError(path, fmt::format("profile file {} is a directory", path));
+  std::ifstream f(path);
+  if (!f) throw InputError(path, fmt::format("profile file {} cannot be read", path));
+  std::stringstream ss;
+  ss << f.rdbuf();
+  if (f.bad()) throw InputError(path, fmt::format("profile file {} cannot be read", path));
+  return parse_profile_csv(ss.str(), path);
+}
+
+void validate_measured_profile(const MeasuredProfile& p, double R, int segments) {
+  const double width = 2 * kPi * R / segments;
+  const auto& pts = p.points;
+  const double tol = 1e-3;
+  if (std::abs(pts.front().x()) > tol || std::abs(pts.back().x() - width) > tol)
+    throw InputError(p.source, fmt::format("{}: x must run from 0 to the segment width pi D / segments = {:.4f} m "
+                                           "(within 1 mm); it runs from {:.4f} to {:.4f} m",
+                                           p.source, width, pts.front().x(), pts.back().x()));
+  for (size_t i = 0; i < pts.size(); ++i) {
+    if (pts[i].x() < -tol || pts[i].x() > width + tol)
+      throw InputError(p.source, fmt::format("{}: point {} has x = {} m, outside its segment [0, {:.4f}] m", p.source,
+                                             i + 1, pts[i].x(), width));
+    if (!(pts[i].y() > 0))
+      throw InputError(p.source, fmt::format("{}: point {} has y = {} m: the profile must stay inside the shell "
+                                             "(thickness y > 0)",
+                                             p.source, i + 1, pts[i].y()));
+    if (!(pts[i].y() < 0.5 * R))
+      throw InputError(p.source, fmt::format("{}: point {} has y = {} m: thicker than half the shell radius ({:.4g} m)",
+                                             p.source, i + 1, pts[i].y(), 0.5 * R));
+  }
+  if (std::abs(pts.front().y() - pts.back().y()) > tol)
+    throw InputError(p.source, fmt::format("{}: the first and last thickness differ ({} vs {} m); the profile repeats "
+                                           "round the ring, so both ends must match within 1 mm",
+                                           p.source, pts.front().y(), pts.back().y()));
+  if (polyline_self_intersects(pts))
+    throw InputError(p.source, fmt::format("{}: the profile crosses itself", p.source));
+}
+
+std::vector<V> measured_profile_to_segment(const MeasuredProfile& p, double R, int segments, double h) {
+  const double seg = 2 * kPi / segments;
+  const double width = seg * R;
+  auto to_mill = [&](const V& q) {
+    const double th = q.x() / R - 0.5 * seg, r = R - q.y();
+    return V(r * std::cos(th), r * std::sin(th));
+  };
+  std::vector<V> xy;
+  for (size_t i = 0; i < p.points.size(); ++i) {
+    V a = p.points[i];
+    if (i == 0) a.x() = 0;                          // snap the ends onto the segment edges
+    if (i + 1 == p.points.size()) a.x() = width;
+    if (i == 0) {
+      xy.push_back(a);
+      continue;
+    }
+    // pieces are subdivided in the (x, y) frame, so plate stretches follow the
+    // shell; their count comes from the length in the mill frame
+    const V b = xy.back();
+    const int n = std::max(1, static_cast<int>(std::ceil((to_mill(a) - to_mill(b)).norm() / h - 1e-9)));
+    for (int j = 1; j < n; ++j) xy.push_back(b + (a - b) * (static_cast<double>(j) / n));
+    xy.push_back(a);
+  }
+  // the two ends must have the same thickness: use their mean
+  const double yend = 0.5 * (xy.front().y() + xy.back().y());
+  xy.front().y() = yend;
+  xy.back().y() = yend;
+  std::vector<V> out;
+  out.reserve(xy.size());
+  for (const V& q : xy) out.push_back(to_mill(q));
+  return out;
+}
+
+std::vector<V> segment_to_profile_xy(const std::vector<V>& nodes, double R, double centre, double seg) {
+  std::vector<V> out;
+  out.reserve(nodes.size());
+  for (const V& q : nodes) {
+    double th = std::atan2(q.y(), q.x()) - centre + 0.5 * seg;
+    while (th < -kPi) th += 2 * kPi;
+    while (th > kPi) th -= 2 * kPi;
+    out.emplace_back(th * R, R - q.norm());
+  }
+  return out;
+}
+
+}  // namespace linerlife

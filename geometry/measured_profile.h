@@ -1,0 +1,47 @@
+// measured_profile.h - a lifter profile given as points instead of a
+// parametric design (a plant scan, a digitised drawing). Format: docs/profile-csv.md.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "geometry/lifter_design.h"
+
+namespace linerlife {
+
+/// Reads a profile CSV: optional '#' comment lines, an optional header line
+/// "x_m,y_m", then one "x,y" pair per line in metres (x along the shell,
+/// anticlockwise; y thickness above the shell). Throws InputError naming the
+/// file and line for a missing or unreadable file, a directory, non-numeric
+/// or missing fields, fewer than 3 points, or non-finite values.
+MeasuredProfile load_profile_csv(const std::string& path);
+
+/// Parses profile CSV text (the same rules); `source` names it in messages.
+MeasuredProfile parse_profile_csv(const std::string& text, const std::string& source);
+
+/// Checks that the profile fits the mill: x runs from 0 to the segment width
+/// pi D / segments (within 1 mm), stays in [0, width], every y is inside the
+/// shell (0 < y < R / 2), both ends have the same thickness (within 1 mm, the
+/// profile repeats round the ring), and the polyline does not cross itself.
+/// Throws InputError naming the file.
+void validate_measured_profile(const MeasuredProfile& p, double shell_radius_m, int segments);
+
+/// Maps the profile onto the segment centred at angle 0 (theta = x / R - half
+/// segment, r = R - y), subdividing in the (x, y) frame so plate stretches
+/// follow the shell curvature; elements no longer than h. Both end nodes lie
+/// on the segment's radial edges.
+std::vector<Eigen::Vector2d> measured_profile_to_segment(const MeasuredProfile& p, double shell_radius_m,
+                                                         int segments, double h);
+
+/// The inverse: a segment's nodes (segment centred at `centre_rad`) in the
+/// unrolled (x, y) frame of the CSV format.
+std::vector<Eigen::Vector2d> segment_to_profile_xy(const std::vector<Eigen::Vector2d>& nodes, double shell_radius_m,
+                                                   double centre_rad, double segment_angle_rad);
+
+/// Whether an open polyline crosses itself (segments that are not neighbours
+/// touch or cross). O(n^2), for input validation and tests.
+bool polyline_self_intersects(const std::vector<Eigen::Vector2d>& pts);
+
+}  // namespace linerlife

@@ -1,0 +1,74 @@
+// Measured profiles: CSV round trip and refusals.
+#include <filesystem>
+#include <fstream>
+
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+
+#include "fixtures.h"
+#include "geometry/errors.h"
+#include "geometry/measured_profile.h"
+#include "geometry/metrics.h"
+
+using namespace linerlife;
+using namespace linerlife::test;
+using V = Eigen::Vector2d;
+
+TEST_CASE("a measured profile round-trips through CSV", "[geometry][csv]") {
+  const Mill mill = qiu_mill();
+  const LinerSurface s = build_liner_surface(mill, qiu_liner());
+  const auto xy = segment_to_profile_xy(segment_chain(s, 0), 5.18, 0.0, s.segment_angle_rad());
+  std::string csv = "# exported segment 0\nx_m,y_m\n";
+  for (const V& p : xy) csv += fmt::format("{:.17g},{:.17g}\n", p.x(), p.y());
+  const MeasuredProfile prof = parse_profile_csv(csv, "roundtrip.csv");
+  REQUIRE(prof.points.size() == xy.size());
+  REQUIRE_NOTHROW(validate_measured_profile(prof, 5.18, 64));
+  LinerDesign d = qiu_liner();
+  d.measured = true;
+  d.profile = prof;
+  const LinerSurface m = build_liner_surface(mill, d);
+  const SegmentMetrics a = segment_metrics(s, 5, Rotation::Ccw, 7800), b = segment_metrics(m, 5, Rotation::Ccw, 7800);
+  CHECK(b.area_m2 == Approx(a.area_m2).epsilon(1e-9));
+  CHECK(b.lifter_height_m == Approx(a.lifter_height_m).margin(1e-9));
+  CHECK(b.face_angle_leading_deg == Approx(a.face_angle_leading_deg).margin(1e-6));
+  CHECK(b.top_width_m == Approx(a.top_width_m).margin(1e-9));
+}
+
+TEST_CASE("bad profile files are refused naming the file and the line", "[geometry][csv][input]") {
+  auto refuse_text = [](const std::string& text, const std::string& words) {
+    try {
+      parse_profile_csv(text, "bad.csv");
+      FAIL("accepted: " << text);
+    } catch (const InputError& e) {
+      CHECK(e.key() == "bad.csv");
+      CHECK_THAT(e.what(), Catch::Contains(words));
+    }
+  };
+  refuse_text("", "at least 3 points");
+  refuse_text("x_m,y_m\n", "at least 3 points");
+  refuse_text("0,0.1\n0.1,abc\n0.2,0.1\n", "bad.csv:2");
+  refuse_text("0 0.1\n", "two comma-separated");
+  refuse_text("0,0.1\n0.1,nan\n0.2,0.1\n", "non-finite");
+
+  auto refuse_profile = [](std::vector<V> pts, const std::string& words) {
+    MeasuredProfile p;
+    p.source = "scan.csv";
+    p.points = pts;
+    try {
+      validate_measured_profile(p, 5.18, 64);
+      FAIL("accepted a bad profile: " << words);
+    } catch (const InputError& e) {
+      CHECK_THAT(e.what(), Catch::Contains(words));
+    }
+  };
+  const double w = 2 * M_PI * 5.18 / 64;
+  refuse_profile({{0, 0.07}, {0.2, 0.3}, {0.4, 0.07}}, "segment width");
+  refuse_profile({{0, 0.07}, {0.2, -0.01}, {w, 0.07}}, "inside the shell");
+  refuse_profile({{0, 0.07}, {0.3, 0.3}, {0.1, 0.3}, {0.2, 0.0001}, {w, 0.07}}, "crosses itself");
+  refuse_profile({{0, 0.07}, {0.2, 0.3}, {w, 0.05}}, "both ends must match");
+  refuse_profile({{0, 0.07}, {0.6, 0.3}, {w, 0.07}}, "outside its segment");
+
+  namespace fs = std::filesystem;
+  CHECK_THROWS_WITH(load_profile_csv("/nonexistent/scan.csv"), Catch::Contains("does not exist"));
+  CHECK_THROWS_WITH(load_profile_csv(fs::temp_directory_path().string()), Catch::Contains("is a directory"));
+}

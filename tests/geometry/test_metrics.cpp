@@ -1,0 +1,104 @@
+// Metrics of parametric designs against their definitions, and convergence of
+// the metrics of a worn profile with the element size.
+#include <catch2/catch.hpp>
+
+#include "fixtures.h"
+#include "geometry/metrics.h"
+#include "geometry/remesh.h"
+
+using namespace linerlife;
+using namespace linerlife::test;
+using V = Eigen::Vector2d;
+
+TEST_CASE("metrics of a parametric lifter equal its design", "[geometry][metrics]") {
+  struct Case {
+    Mill mill;
+    LinerDesign liner;
+  };
+  LinerDesign asym = qiu_liner();
+  asym.design.face_angle_leading_deg = 30;
+  asym.design.face_angle_trailing_deg = 12;
+  asym.design.top_width_m = 0.12;
+  for (const Case& c : {Case{qiu_mill(), qiu_liner()}, Case{qiu_mill(Rotation::Cw), asym}, Case{pilot_mill(), pilot_liner()}}) {
+    const LinerSurface s = build_liner_surface(c.mill, c.liner);
+    const LinerMetrics lm = metrics(s, c.mill.rotation, c.liner.density_kg_m3);
+    const LifterDesign& d = c.liner.design;
+    for (int k : {0, 1, c.liner.segments - 1}) {
+      const SegmentMetrics& m = lm.segments[k];
+      CHECK(m.has_lifter);
+      CHECK(m.lifter_height_m == Approx(d.lifter_height_m).margin(1e-12));
+      CHECK(m.plate_ref_thickness_m == Approx(d.plate_thickness_m).margin(1e-12));
+      CHECK(m.min_thickness_m == Approx(d.plate_thickness_m).margin(1e-12));
+      // face angles: the fit band's centroid sits within a fraction of a mm of
+      // the mid-height point that defines the design angle
+      CHECK(m.face_angle_leading_deg == Approx(d.face_angle_leading_deg).margin(3e-3));
+      CHECK(m.face_angle_trailing_deg == Approx(d.face_angle_trailing_deg).margin(3e-3));
+      CHECK(m.top_width_m == Approx(d.top_width_m).margin(1e-9));
+      CHECK(m.mass_kg_per_m == Approx(m.area_m2 * c.liner.density_kg_m3));
+      CHECK(std::abs(std::remainder(m.crest_angle_rad - s.segment_centre_rad(k), 2 * M_PI)) < 1e-9);
+    }
+    // free area + liner area = shell disc
+    const double R = c.mill.shell_radius_m();
+    CHECK(lm.free_area_m2 + lm.area_m2 == Approx(M_PI * R * R).epsilon(1e-12));
+    CHECK(lm.effective_diameter_m == Approx(2 * std::sqrt(lm.free_area_m2 / M_PI)));
+  }
+}
+
+TEST_CASE("a worn lifter lays its leading face back and loses height", "[geometry][metrics]") {
+  // wear concentrated on the leading face: the face recedes more at its top
+  const Mill mill = qiu_mill();
+  LinerSurface s = build_liner_surface(mill, qiu_liner());
+  const SegmentMetrics before = segment_metrics(s, 0, Rotation::Ccw, 7800);
+  std::vector<double> depth(s.n_nodes(), 0.0);
+  for (int i = s.segment_begin[0]; i < s.segment_begin[1]; ++i) {
+    const V& p = s.nodes[i];
+    const double th = std::atan2(p.y(), p.x()), t = 5.18 - p.norm();
+    if (th > 0) depth[i] = 0.04 * std::max(0.0, (t - 0.075) / 0.25);  // 0 at the plate, 40 mm at the top
+  }
+  const RemeshResult r = remesh(s, depth, RemeshOptions{0.01});
+  const SegmentMetrics after = segment_metrics(r.surface, 0, Rotation::Ccw, 7800);
+  CHECK(after.face_angle_leading_deg > before.face_angle_leading_deg + 5);
+  CHECK(after.face_angle_trailing_deg == Approx(before.face_angle_trailing_deg).margin(0.5));
+  CHECK(after.lifter_height_m < before.lifter_height_m);
+  CHECK(after.mass_kg_per_m < before.mass_kg_per_m);
+}
+
+namespace {
+
+/// A smooth recession field in space [m]: deeper at the lifter top and on the
+/// leading side, the shape the layer model gives.
+double wear_field(const V& p) {
+  const double th = std::atan2(p.y(), p.x()), t = 5.18 - p.norm();
+  return 0.004 * (1.0 + 0.6 * std::tanh(th / 0.02)) * (0.3 + (t - 0.075) / 0.25);
+}
+
+SegmentMetrics worn_metrics(double h, int steps) {
+  LinerSurface s = build_liner_surface(qiu_mill(), qiu_liner(h));
+  RemeshOptions opt;
+  opt.element_size_m = h;
+  for (int k = 0; k < steps; ++k) {
+    // wear on the lifter of segment 0 and the plates beside it
+    std::vector<double> depth(s.n_nodes(), 0.0);
+    for (int i = 0; i < s.n_nodes(); ++i)
+      if (std::abs(std::atan2(s.nodes[i].y(), s.nodes[i].x())) < 1.5 * s.segment_angle_rad())
+        depth[i] = wear_field(s.nodes[i]);
+    s = remesh(s, depth, opt).surface;
+  }
+  return segment_metrics(s, 0, Rotation::Ccw, 7800);
+}
+
+}  // namespace
+
+TEST_CASE("metrics of a worn profile change by under 1 % when the element size is halved", "[geometry][metrics][convergence]") {
+  // 10 steps of the same spatial wear field at the default 10 mm and at 5 mm
+  const SegmentMetrics a = worn_metrics(0.01, 10), b = worn_metrics(0.005, 10);
+  INFO("height " << a.lifter_height_m << " vs " << b.lifter_height_m << ", lead " << a.face_angle_leading_deg << " vs "
+                 << b.face_angle_leading_deg << ", area " << a.area_m2 << " vs " << b.area_m2);
+  CHECK(a.lifter_height_m == Approx(b.lifter_height_m).epsilon(0.01));
+  CHECK(a.face_angle_leading_deg == Approx(b.face_angle_leading_deg).epsilon(0.01));
+  CHECK(a.face_angle_trailing_deg == Approx(b.face_angle_trailing_deg).epsilon(0.01));
+  CHECK(a.top_width_m == Approx(b.top_width_m).epsilon(0.01));
+  CHECK(a.area_m2 == Approx(b.area_m2).epsilon(0.01));
+  // and the wear did something measurable
+  CHECK(a.lifter_height_m < 0.25 - 0.02);
+}
