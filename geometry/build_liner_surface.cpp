@@ -130,6 +130,12 @@ void validate_lifter_design(const Mill& mill, int segments, const LifterDesign& 
                      fmt::format("lifter_top_width_m = {} m: must be > 0 and narrower than the segment at the lifter "
                                  "top ({:.4g} m for {} segments)",
                                  d.top_width_m, chord_at_top, segments));
+  const double feature = std::min({d.lifter_height_m, d.top_width_m});
+  if (h > 0.25 * feature)
+    throw InputError("liner.element_size_m",
+                     fmt::format("element_size_m = {} m is too coarse to resolve the lifter: it must be at most a "
+                                 "quarter of the lifter height and top width ({:.4g} m)",
+                                 h, 0.25 * feature));
   const Trapezoid t = trapezoid(R, d, +1);
   const double half_base = std::max(std::abs(polar_angle(t.lead_foot)), std::abs(polar_angle(t.trail_foot)));
   const double plate_left = (0.5 * seg - half_base) * rp;  // plate arc on each side of the lifter
@@ -141,12 +147,6 @@ void validate_lifter_design(const Mill& mill, int segments, const LifterDesign& 
                                  2 * half_base * rp, seg * rp, h));
   if (d.corner_radius_m < 0)
     throw InputError(key("corner_radius_m"), fmt::format("corner_radius_m = {} m: must be >= 0", d.corner_radius_m));
-  const double feature = std::min({d.lifter_height_m, d.top_width_m});
-  if (h > 0.25 * feature)
-    throw InputError("liner.element_size_m",
-                     fmt::format("element_size_m = {} m is too coarse to resolve the lifter: it must be at most a "
-                                 "quarter of the lifter height and top width ({:.4g} m)",
-                                 h, 0.25 * feature));
 }
 
 std::vector<Eigen::Vector2d> segment_profile(const Mill& mill, const LinerDesign& design, int which) {

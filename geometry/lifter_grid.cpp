@@ -76,29 +76,34 @@ LifterGridSpec lifter_grid_spec(const LinerSurface& s, int k, int n) {
   const double R = s.shell_radius_m;
   std::vector<V> body = local_body(s, k, s.segment_angle_rad() * R / 200.0);
   const int m = s.segment_size(k) + 1;  // the surface part of the body polygon
-  double ref = 0.5 * (body.front().y() + body[m - 1].y());
-  double top = ref;
-  for (int i = 0; i < m; ++i) top = std::max(top, body[i].y());
-  const double thresh = ref + 0.01 * (top - ref);
-  double xl = 0, xr = 0;
+  // the lifter base: where the radial thickness exceeds the plate (the
+  // thickness at the segment edges) by more than 1 % of the lifter height
+  std::vector<double> t(m);
+  for (int i = 0; i < m; ++i) t[i] = R - s.nodes[(s.segment_begin[k] + i) % s.n_nodes()].norm();
+  const double ref = 0.5 * (t.front() + t.back());
+  const double tmax = *std::max_element(t.begin(), t.end());
+  const double thresh = ref + 0.01 * (tmax - ref);
+  double xl = 0, xr = 0, top = 0;
   for (int i = 0; i < m; ++i)
-    if (body[i].y() > thresh) {
+    if (t[i] > thresh) {
       xl = std::min(xl, body[i].x());
       xr = std::max(xr, body[i].x());
+      top = std::max(top, body[i].y());
     }
   LifterGridSpec g;
   g.segment = k;
   g.nx = g.ny = n;
   const double w = xr - xl;
-  g.dx = w / (n - 1);  // one extra cell's width so the base is fully inside
-  g.x0 = xl - 0.5 * g.dx;
   g.y0 = 0;
-  g.dy = top / n;
-  if (w <= 0) {  // no lifter: a grid over the middle of the plate
+  if (w > 0) {
+    g.dx = w / (n - 1);  // one extra cell's width so the base is fully inside
+    g.x0 = xl - 0.5 * g.dx;
+    g.dy = top / n;
+  } else {  // no lifter: a grid over the middle half of the plate
     const double half = 0.25 * s.segment_angle_rad() * R;
     g.dx = 2 * half / n;
     g.x0 = -half;
-    g.dy = std::max(top, 1e-9) / n;
+    g.dy = std::max(tmax, 1e-9) / n;
   }
   return g;
 }

@@ -29,10 +29,16 @@ std::vector<V> resample_polyline(const std::vector<V>& pts, double h) {
     for (size_t i = 1; i + 1 < p.size(); ++i) {
       const V a = p[i] - p[i - 1], b = p[i + 1] - p[i];
       const double la = a.norm(), lb = b.norm();
+      const double merged = (p[i + 1] - p[i - 1]).norm();
       const double signed_tri = 0.5 * (a.x() * b.y() - a.y() * b.x());  // > 0: vertex right of the chord
+      // a degenerate element (shorter than 1e-6 h) always goes: the area it
+      // can change, below 1e-6 h^2 / 2, is round-off against the liner's
+      if (std::min(la, lb) < 1e-6 * h && merged <= h) {
+        best = static_cast<int>(i);
+        break;
+      }
       if (signed_tri > 0) continue;
       const double tri = -signed_tri;
-      const double merged = (p[i + 1] - p[i - 1]).norm();
       const bool nearly_straight = la > 0 && lb > 0 && tri / (la * lb) * 2 < collinear && a.dot(b) > 0 && merged <= h;
       const bool short_and_small = std::min(la, lb) < min_len && tri < max_tri && merged <= h;
       if ((nearly_straight || short_and_small) && tri < best_tri) {

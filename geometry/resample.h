@@ -17,7 +17,8 @@ namespace linerlife {
 /// are split into equal parts (exactly area-preserving). A vertex is removed
 /// only when that removes liner material (it lies on the charge side of the
 /// chord of its neighbours, for an anticlockwise liner surface): resampling
-/// never adds material.
+/// never adds material, except by removing degenerate elements shorter than
+/// 1e-6 h (an area change below round-off).
 std::vector<Eigen::Vector2d> resample_polyline(const std::vector<Eigen::Vector2d>& pts, double h);
 
 }  // namespace linerlife

@@ -1,1 +1,148 @@
+// The TOML configuration: defaults round trip and every refusal (issue 2 §2).
 #include <catch2/catch.hpp>
+
+#include "app/config.h"
+#include "geometry/errors.h"
+
+using namespace linerlife;
+
+namespace {
+
+/// `text` with `key = value` in `section` replaced (or added).
+std::string edited_text(std::string text, const std::string& section, const std::string& key, const std::string& value) {
+  const std::string header = "[" + section + "]";
+  const auto sec = text.find(header);
+  REQUIRE(sec != std::string::npos);
+  const auto pos = text.find("\n" + key + " = ", sec);
+  const auto next_sec = text.find("\n[", sec + 1);
+  if (pos != std::string::npos && (next_sec == std::string::npos || pos < next_sec)) {
+    const auto end = text.find('\n', pos + 1);
+    text.replace(pos + 1, end - pos - 1, key + " = " + value);
+  } else {
+    text.insert(sec + header.size(), "\n" + key + " = " + value);
+  }
+  return text;
+}
+
+/// The bundled default with one key replaced or added.
+std::string edited(const std::string& section, const std::string& key, const std::string& value) {
+  return edited_text(default_config_text(), section, key, value);
+}
+
+std::string removed(const std::string& key, std::string text = default_config_text()) {
+  const auto pos = text.find("\n" + key + " = ");
+  REQUIRE(pos != std::string::npos);
+  text.erase(pos + 1, text.find('\n', pos + 1) - pos);
+  return text;
+}
+
+int line_of(const std::string& text, const std::string& needle) {
+  const auto pos = text.find(needle);
+  REQUIRE(pos != std::string::npos);
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
+}
+
+/// Expects the text to be refused with an InputError whose message holds every fragment.
+void refused(const std::string& text, std::initializer_list<std::string> fragments) {
+  try {
+    load_config_text(text, "mill.toml", ".");
+    FAIL("configuration accepted; expected a refusal mentioning " << *fragments.begin());
+  } catch (const InputError& e) {
+    for (const auto& f : fragments) CHECK_THAT(e.what(), Catch::Contains(f));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("the bundled default is the Qiu mill of thesis Table 5.1", "[app][config]") {
+  const Config c = load_default_config();
+  CHECK(c.mill.diameter_m == 10.36);
+  CHECK(c.mill.speed_rpm == 10.36);
+  CHECK(c.liner.segments == 64);
+  CHECK(c.charge.filling == 0.24);
+  CHECK(c.charge.ball_filling == 0.12);
+  CHECK(c.charge.ball_diameter_m == 0.1333);
+  CHECK(c.liner.design.lifter_height_m == 0.25);
+  CHECK(c.model.charge == "layer");
+  CHECK(c.model.variant == "1.2");
+}
+
+TEST_CASE("`defaults` output loads back to the same configuration", "[app][config]") {
+  const Config a = load_default_config();
+  const std::string text = config_to_toml(a, true);
+  const Config b = load_config_text(text, "defaults.toml", ".");
+  CHECK(config_to_toml(b, false) == config_to_toml(a, false));
+  // every schema key is written on its own line at the start of the line
+  for (const auto& k : config_schema().keys) {
+    const bool present = text.find("\n" + k.name + " = ") != std::string::npos;
+    const bool commented = text.find("\n# " + k.name + " = ") != std::string::npos;
+    INFO(k.full_name());
+    CHECK((present || commented));
+  }
+  CHECK(text.find("\ndiameter_m = 10.36\n") != std::string::npos);
+}
+
+TEST_CASE("a speed given as a fraction of critical resolves against the liners", "[app][config]") {
+  const std::string text = edited_text(removed("speed_rpm"), "mill", "speed_fraction_critical", "0.75");
+  const Config c = load_config_text(text, "f.toml", ".");
+  // D inside the new liners is 9.9608 m (docs/geometry.md): N_c = 42.3 / sqrt(D)
+  CHECK(c.mill.speed_rpm == Approx(0.75 * 42.3 / std::sqrt(9.9608)).epsilon(2e-3));
+}
+
+TEST_CASE("syntax, unknown keys, types, ranges and missing keys are refused with the line", "[app][config][input]") {
+  const std::string base = default_config_text();
+  refused("[mill\ndiameter_m = 3", {"mill.toml:1", "TOML syntax error"});
+  {
+    const std::string t = edited("mill", "diametre_m", "10.0");
+    refused(t, {"mill.toml:" + std::to_string(line_of(t, "diametre_m")), "unknown key [mill] diametre_m", "diameter_m"});
+  }
+  refused(base + "\n[milling]\nx = 1\n", {"unknown section", "milling"});
+  refused(edited("mill", "diameter_m", "\"ten\""), {"[mill] diameter_m = \"ten\"", "expected a number"});
+  refused(edited("liner", "segments", "64.5"), {"[liner] segments = 64.5", "expected an integer"});
+  refused(edited("mill", "rotation", "1"), {"rotation", "expected a string", "\"ccw\", \"cw\""});
+  refused(edited("mill", "rotation", "\"left\""), {"rotation = \"left\"", "one of \"ccw\", \"cw\""});
+  refused(edited("mill", "diameter_m", "-3.0"), {"diameter_m = -3:", "out of range", "0.1 < value <= 15 m"});
+  refused(edited("charge", "filling", "0.5"), {"filling = 0.5", "0 < value < 0.5"});
+  refused(edited("charge", "filling", "0.0"), {"filling = 0:", "out of range"});
+  refused(edited("model", "time_step_s", "-0.01"), {"time_step_s = -0.01", "out of range"});
+  refused(edited("model", "variant", "1.2"), {"variant", "expected a string"});
+  refused(edited("model", "charge", "\"fem\""), {"charge = \"fem\"", "\"empirical\", \"layer\", \"dem\""});
+  refused(removed("diameter_m"), {"missing required key [mill] diameter_m"});
+  refused(removed("lifter_height_m"), {"missing key [liner] lifter_height_m", "unless profile_csv"});
+  refused(removed("speed_rpm"), {"speed_rpm or speed_fraction_critical"});
+  refused(edited("mill", "speed_fraction_critical", "0.7"), {"exactly one", "not both"});
+}
+
+TEST_CASE("physically impossible mills are refused naming the key and the line", "[app][config][input]") {
+  {
+    const std::string t = edited("liner", "lifter_height_m", "1.4");
+    refused(t, {"mill.toml:" + std::to_string(line_of(t, "lifter_height_m = 1.4")), "quarter of the shell radius"});
+  }
+  refused(edited("liner", "lifter_top_width_m", "0.6"), {"lifter_top_width_m", "narrower than the segment"});
+  refused(edited("liner", "face_angle_leading_deg", "80.0"), {"face_angle_leading_deg = 80", "out of range"});
+  refused(edited("liner", "face_angle_leading_deg", "45.0"), {"does not fit in its segment"});
+  refused(edited("mill", "speed_rpm", "13.5"), {"speed_rpm = 13.5", "of the critical speed", "centrifuges"});
+  refused(edited("charge", "ball_filling", "0.3"), {"ball_filling = 0.3 is larger than filling = 0.24"});
+  refused(edited("charge", "ball_diameter_m", "0.3"), {"ball_diameter_m = 0.3", "spacing between lifters"});
+  refused(edited("liner", "segments", "0"), {"segments = 0", "out of range"});
+  refused(edited("liner", "element_size_m", "0.1"), {"element_size_m", "too coarse"});
+  refused(edited("liner", "pattern", "\"hi-lo\""), {"low_lifter_height_m", "hi-lo"});
+  refused(edited("liner", "low_lifter_height_m", "0.1"), {"only with pattern"});
+}
+
+TEST_CASE("a hi-lo pattern and a measured profile load", "[app][config]") {
+  std::string t = edited("liner", "pattern", "\"hi-lo\"");
+  t = edited_text(t, "liner", "low_lifter_height_m", "0.15");
+  t = edited_text(t, "liner", "low_lifter_top_width_m", "0.1");
+  const Config c = load_config_text(t, "hilo.toml", ".");
+  CHECK(c.liner.hi_lo);
+  CHECK(c.liner.low.lifter_height_m == 0.15);
+  CHECK(c.liner.low.top_width_m == 0.1);
+  CHECK(c.liner.low.plate_thickness_m == c.liner.design.plate_thickness_m);
+}
+
+TEST_CASE("a configuration file that cannot be read is refused naming it", "[app][config][input]") {
+  CHECK_THROWS_WITH(load_config_file("/nonexistent/mill.toml"), Catch::Contains("does not exist"));
+  CHECK_THROWS_WITH(load_config_file(LINERLIFE_SOURCE_DIR "/data"), Catch::Contains("is a directory"));
+  CHECK_NOTHROW(load_config_file(LINERLIFE_SOURCE_DIR "/data/mills/pilot_test_16.toml"));
+}

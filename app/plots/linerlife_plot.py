@@ -1,0 +1,39 @@
+#!/usr/bin/python3
+"""Draws the charts of a linerlife results file with matplotlib.
+
+Usage: linerlife_plot.py KIND RESULTS.h5 OUT_DIR
+
+KIND names a module plot_KIND.py next to this file whose draw(h5, out) makes
+the charts. Every PNG is written under a temporary name and renamed, so a
+crash never leaves a half-written picture. Needs Debian's python3-matplotlib
+and python3-h5py (run with /usr/bin/python3).
+"""
+import importlib
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+
+def main(argv):
+    if len(argv) != 4:
+        print(__doc__, file=sys.stderr)
+        return 2
+    kind, results, out = argv[1:]
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    try:
+        module = importlib.import_module("plot_" + kind)
+    except ImportError as e:
+        print(f"linerlife_plot: no charts for '{kind}': {e}", file=sys.stderr)
+        return 2
+    import h5py
+
+    with h5py.File(results, "r") as h5:
+        module.draw(h5, out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

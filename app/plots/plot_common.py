@@ -1,0 +1,45 @@
+"""Helpers shared by the chart modules."""
+import os
+
+import numpy as np
+
+
+def save(fig, out_dir, name):
+    """Saves fig as out_dir/name atomically (temporary file, then rename)."""
+    final = os.path.join(out_dir, name)
+    tmp = os.path.join(out_dir, f".{name}.tmp.{os.getpid()}.png")
+    fig.savefig(tmp, dpi=130, bbox_inches="tight")
+    os.replace(tmp, final)
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)
+
+
+def surface(h5, group="/surface"):
+    """Nodes (n x 2), segment_begin, shell radius and segment count of a surface group."""
+    g = h5[group]
+    return (np.asarray(g["nodes"]), np.asarray(g["segment_begin"]), float(g.attrs["shell_radius_m"]),
+            int(g.attrs["segments"]))
+
+
+def segment_chain(nodes, begin, k):
+    """Nodes of segment k including the first node of the next segment."""
+    n = len(nodes)
+    idx = list(range(begin[k], begin[k + 1])) + [begin[k + 1] % n]
+    return nodes[idx]
+
+
+def unrolled(chain, R, centre, seg_angle):
+    """Mill-frame points -> (x along the shell from the segment start, thickness), as in thesis Fig. 5-12."""
+    th = np.arctan2(chain[:, 1], chain[:, 0]) - centre + 0.5 * seg_angle
+    th = (th + np.pi) % (2 * np.pi) - np.pi
+    return th * R, R - np.hypot(chain[:, 0], chain[:, 1])
+
+
+def lifter_frame(chain, R, centre):
+    """Mill-frame points -> the lifter's local Cartesian frame: x tangential
+    (anticlockwise) from the lifter centreline, y height above the shell."""
+    c, s = np.cos(centre), np.sin(centre)
+    xr = c * chain[:, 0] + s * chain[:, 1]
+    yr = -s * chain[:, 0] + c * chain[:, 1]
+    return yr, R - xr

@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Quick start 2: set up (install what is missing, build), then run the whole
+# default test suite. Tests tagged [slow] are excluded here; they run with the
+# benchmarks (bench/README.md).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+ctest --test-dir "${LINERLIFE_BUILD_DIR:-build}" -LE slow -j "$(nproc 2>/dev/null || echo 2)" --output-on-failure
