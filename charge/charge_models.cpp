@@ -1,0 +1,28 @@
+// The table of charge-motion models (DESIGN.md §2). One row per model; a new
+// model is one more row here.
+#include "charge/charge_model.h"
+
+#include <fmt/format.h>
+
+#include "geometry/errors.h"
+
+namespace linerlife {
+
+const std::vector<ChargeModelEntry>& charge_models() {
+  static const std::vector<ChargeModelEntry> table = {
+      // {name, description, resolves_impacts, resolves_abrasion, make}
+  };
+  return table;
+}
+
+const ChargeModelEntry& find_charge_model(const std::string& name) {
+  std::string names;
+  for (const auto& e : charge_models()) {
+    if (name == e.name) return e;
+    names += (names.empty() ? "" : ", ") + std::string(e.name);
+  }
+  throw InputError("model.charge", fmt::format("charge model \"{}\" is not available; the models are: {}", name,
+                                               names.empty() ? "(none built)" : names));
+}
+
+}  // namespace linerlife
