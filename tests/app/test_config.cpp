@@ -1,4 +1,7 @@
 // The TOML configuration: defaults round trip and every refusal (issue 2 §2).
+#include <fstream>
+#include <sstream>
+
 #include <catch2/catch.hpp>
 
 #include "app/config.h"
@@ -145,4 +148,16 @@ TEST_CASE("a configuration file that cannot be read is refused naming it", "[app
   CHECK_THROWS_WITH(load_config_file("/nonexistent/mill.toml"), Catch::Contains("does not exist"));
   CHECK_THROWS_WITH(load_config_file(LINERLIFE_SOURCE_DIR "/data"), Catch::Contains("is a directory"));
   CHECK_NOTHROW(load_config_file(LINERLIFE_SOURCE_DIR "/data/mills/pilot_test_16.toml"));
+}
+
+TEST_CASE("every configuration key is documented", "[app][config][docs]") {
+  std::ifstream f(LINERLIFE_SOURCE_DIR "/docs/configuration.md");
+  std::stringstream ss;
+  ss << f.rdbuf();
+  const std::string doc = ss.str();
+  for (const auto& k : config_schema().keys) {
+    INFO("[" << k.section << "] " << k.name << " is missing from docs/configuration.md");
+    CHECK(doc.find("### [" + k.section + "]") != std::string::npos);
+    CHECK(doc.find("| `" + k.name + "` |") != std::string::npos);
+  }
 }
