@@ -1,0 +1,845 @@
+#include "charge/dem/dem_system.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <atomic>
+#include <thread>
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include "geometry/errors.h"
+
+namespace linerlife {
+
+// Everything one thread writes during a step, padded against false sharing.
+struct alignas(64) DemSystem::ThreadData {
+  std::vector<double> fx, fy, tq;  // [N/m], [N m/m] contact forces on every disc from this thread's pairs
+  std::vector<int> nc;             // contacts counted by this thread
+  std::vector<int> row_count;      // list rebuild: partners of each row in this thread's particle range
+  std::vector<int> loc_j;
+  std::vector<double> loc_xi;
+  double maxd2 = 0;                // [m2] largest squared displacement since the last build
+  std::vector<double> ld_n, ld_s, ld_ns, ld_ss;  // per element load sums
+  double drive_work = 0;           // [J/m]
+  double wall_fx = 0, wall_fy = 0;  // [N/m] sum of the wall forces this thread computed at the last evaluation
+  double wimp_x = 0, wimp_y = 0;   // [N s/m] wall impulse, kick by kick
+  std::vector<ImpactRecord> impacts;
+  std::vector<WallContactRecord> records;
+  long long pair_contacts = 0, wall_contacts = 0;
+  double max_ratio = 0;
+  double max_v2 = 0;  // [m2/s2] largest speed squared at the last check
+  int worst = -1;     // disc with max_v2
+  bool nonfinite = false;
+  bool checked = false;  // the last gather checked its range
+  double elastic_pair = 0, elastic_wall = 0;  // [J/m] energy in the contact springs at the last evaluation
+  long long steps_done = 0;  // steps completed in this advance()
+  int fail = 0;
+  std::string msg;
+};
+
+namespace {
+
+inline int range_begin(int n, int t, int nt) { return static_cast<int>(static_cast<long long>(n) * t / nt); }
+
+/// A sense-reversing barrier that spins briefly and then yields the core. The
+/// OpenMP barrier spins much longer before it sleeps; on a machine shared with
+/// other jobs a spinning thread keeps the core from the thread everyone waits
+/// for, and a step can then take milliseconds instead of microseconds.
+class YieldingBarrier {
+ public:
+  explicit YieldingBarrier(int n) : n_(n) {}
+  void wait() {
+    if (n_ == 1) return;
+    const int gen = generation_.load(std::memory_order_acquire);
+    if (count_.fetch_add(1, std::memory_order_acq_rel) == n_ - 1) {
+      count_.store(0, std::memory_order_relaxed);
+      generation_.fetch_add(1, std::memory_order_release);
+      return;
+    }
+    for (int spins = 0; generation_.load(std::memory_order_acquire) == gen; ++spins)
+      if (spins > 2000) std::this_thread::yield();
+  }
+
+ private:
+  const int n_;
+  std::atomic<int> count_{0};
+  std::atomic<int> generation_{0};
+};
+
+}  // namespace
+
+DemSystem::DemSystem(const DemSettings& settings, WallMesh walls, const DemParticles& p)
+    : set_(settings), walls_(std::move(walls)) {
+  n_ = p.size();
+  for (const auto* v : {&p.y, &p.vx, &p.vy, &p.w, &p.radius, &p.mass})
+    if (static_cast<int>(v->size()) != n_) throw std::invalid_argument("DemParticles: vectors of different sizes");
+  if (!(set_.dt > 0)) throw std::invalid_argument("DemSettings: dt must be > 0");
+  nt_ = std::max(1, set_.threads);
+  x_ = p.x, y_ = p.y, vx_ = p.vx, vy_ = p.vy, w_ = p.w, r_ = p.radius, m_ = p.mass;
+  invm_.resize(n_), invI_.resize(n_);
+  rmax_ = 0, rmin_ = std::numeric_limits<double>::max();
+  for (int i = 0; i < n_; ++i) {
+    if (!(r_[i] > 0 && m_[i] > 0)) throw std::invalid_argument("DemParticles: radius and mass must be > 0");
+    invm_[i] = 1 / m_[i];
+    invI_[i] = 2 / (m_[i] * r_[i] * r_[i]);  // uniform disc: I = m r^2 / 2
+    rmax_ = std::max(rmax_, r_[i]), rmin_ = std::min(rmin_, r_[i]);
+  }
+  if (n_ == 0) rmax_ = rmin_ = 1;
+  double rmean = 0;
+  for (int i = 0; i < n_; ++i) rmean += r_[i] / n_;
+  // 3/4 of the mean radius: the list is rebuilt every 10-20 steps in a mill and
+  // holds about twice the contacts (docs/benchmarks.md, ## DEM, skin study)
+  skin_ = set_.skin > 0 ? set_.skin : 0.75 * (n_ > 0 ? rmean : 1.0);
+  fx_.assign(n_, 0), fy_.assign(n_, 0), tq_.assign(n_, 0);
+  xref_ = x_, yref_ = y_;
+  ncontact_.assign(n_, 0);
+  free_steps_.assign(n_, 0);
+  id_.resize(n_);
+  for (int i = 0; i < n_; ++i) id_[i] = i;
+  wslot_elem_.assign(static_cast<size_t>(n_) * kWallSlots, -1);
+  wslot_xi_.assign(static_cast<size_t>(n_) * kWallSlots, 0.0);
+  nb_start_.assign(n_ + 1, 0);
+  td_.resize(nt_);
+  for (auto& t : td_) {
+    t.fx.assign(n_, 0), t.fy.assign(n_, 0), t.tq.assign(n_, 0);
+    t.nc.assign(n_, 0);
+  }
+  if (walls_.n_elements() > 0 && walls_.cell_start.empty())
+    build_wall_grid(walls_, rmax_ + skin_, std::max(0.5 * (rmax_ + skin_), 1e-3 * (walls_.max_radius + rmax_)));
+  angle_ = set_.wall_angle0;
+  cos_a_ = std::cos(angle_), sin_a_ = std::sin(angle_);
+}
+
+DemSystem::~DemSystem() = default;
+DemSystem::DemSystem(DemSystem&&) noexcept = default;
+DemSystem& DemSystem::operator=(DemSystem&&) noexcept = default;
+
+void DemSystem::set_velocity(int i, double vx, double vy, double w) {
+  vx_[i] = vx, vy_[i] = vy, w_[i] = w;
+}
+
+int DemSystem::index_of(int id) const {
+  for (int i = 0; i < n_; ++i)
+    if (id_[i] == id) return i;
+  return -1;
+}
+
+void DemSystem::fail(const std::string& message) {
+#pragma omp critical(dem_fail)
+  {
+    if (!failed_) failure_ = message;
+    failed_ = 1;
+  }
+}
+
+// ---------------------------------------------------------------- neighbours
+
+void DemSystem::rebuild_prepare(double time) {
+  ++builds_;
+  std::swap(nb_start_, old_start_);
+  std::swap(nb_j_, old_j_);
+  std::swap(nb_xi_, old_xi_);
+  if (old_start_.size() != static_cast<size_t>(n_) + 1) old_start_.assign(n_ + 1, 0);
+  double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = -x0, y1 = -x0;
+  for (int i = 0; i < n_; ++i) {
+    x0 = std::min(x0, x_[i]), x1 = std::max(x1, x_[i]);
+    y0 = std::min(y0, y_[i]), y1 = std::max(y1, y_[i]);
+  }
+  cell_ = 2 * rmax_ + skin_;
+  cx0_ = x0 - 0.5 * cell_, cy0_ = y0 - 0.5 * cell_;
+  const double nxd = std::floor((x1 - cx0_) / cell_) + 1, nyd = std::floor((y1 - cy0_) / cell_) + 1;
+  if (!(nxd * nyd < 2e7)) {
+    fail(fmt::format("at t = {:.4f} s the discs spread over {:.3g} x {:.3g} m ({} cells): a disc has flown off "
+                     "(a blow-up); reduce the time step or check the contact parameters",
+                     time, x1 - x0, y1 - y0, nxd * nyd));
+    cnx_ = cny_ = 1;
+  } else {
+    cnx_ = std::max(3, static_cast<int>(nxd)), cny_ = static_cast<int>(nyd);
+  }
+  // Counting sort by cell (stable, so the order is deterministic).
+  const int nc = cnx_ * cny_;
+  cell_start_.assign(nc + 1, 0);
+  cell_of_.resize(n_);
+  for (int i = 0; i < n_; ++i) {
+    int cx = static_cast<int>((x_[i] - cx0_) / cell_), cy = static_cast<int>((y_[i] - cy0_) / cell_);
+    cx = std::clamp(cx, 0, cnx_ - 1), cy = std::clamp(cy, 0, cny_ - 1);
+    cell_of_[i] = cy * cnx_ + cx;
+    ++cell_start_[cell_of_[i] + 1];
+  }
+  for (int c = 0; c < nc; ++c) cell_start_[c + 1] += cell_start_[c];
+  order_.resize(n_);
+  {
+    std::vector<int>& fill = scratch_i_;
+    fill.assign(cell_start_.begin(), cell_start_.end() - 1);
+    for (int i = 0; i < n_; ++i) order_[fill[cell_of_[i]]++] = i;
+  }
+  // Reorder every per-disc array (the particles of a cell become contiguous).
+  auto permute_d = [&](std::vector<double>& v) {
+    scratch_d_.resize(n_);
+    for (int k = 0; k < n_; ++k) scratch_d_[k] = v[order_[k]];
+    v.swap(scratch_d_);
+  };
+  auto permute_i = [&](std::vector<int>& v) {
+    scratch_i_.resize(n_);
+    for (int k = 0; k < n_; ++k) scratch_i_[k] = v[order_[k]];
+    v.swap(scratch_i_);
+  };
+  for (auto* v : {&x_, &y_, &vx_, &vy_, &w_, &fx_, &fy_, &tq_, &r_, &m_, &invm_, &invI_}) permute_d(*v);
+  for (auto* v : {&ncontact_, &id_}) permute_i(*v);
+  scratch_l_.resize(n_);
+  for (int k = 0; k < n_; ++k) scratch_l_[k] = free_steps_[order_[k]];
+  free_steps_.swap(scratch_l_);
+  {
+    std::vector<int> e(wslot_elem_.size());
+    std::vector<double> xi(wslot_xi_.size());
+    for (int k = 0; k < n_; ++k)
+      for (int s = 0; s < kWallSlots; ++s) {
+        e[static_cast<size_t>(k) * kWallSlots + s] = wslot_elem_[static_cast<size_t>(order_[k]) * kWallSlots + s];
+        xi[static_cast<size_t>(k) * kWallSlots + s] = wslot_xi_[static_cast<size_t>(order_[k]) * kWallSlots + s];
+      }
+    wslot_elem_.swap(e);
+    wslot_xi_.swap(xi);
+  }
+  // cell of each (new) index
+  for (int c = 0; c < nc; ++c)
+    for (int k = cell_start_[c]; k < cell_start_[c + 1]; ++k) cell_of_[k] = c;
+}
+
+void DemSystem::rebuild_rows(int t) {
+  ThreadData& d = td_[t];
+  const int p0 = range_begin(n_, t, nt_), p1 = range_begin(n_, t + 1, nt_);
+  d.row_count.assign(p1 - p0, 0);
+  d.loc_j.clear();
+  d.loc_xi.clear();
+  const double skin = skin_;
+  const double* x = x_.data();
+  const double* y = y_.data();
+  const double* r = r_.data();
+  for (int i = p0; i < p1; ++i) {
+    const double xi = x[i], yi = y[i], ri = r[i];
+    const int c = cell_of_[i], cx = c % cnx_, cy = c / cnx_;
+    const int before = static_cast<int>(d.loc_j.size());
+    // Half stencil in cell order: the rest of i's cell, the cell to the right, the three above.
+    // Every partner has a larger index, and they come out in ascending order.
+    auto scan = [&](int j0, int j1) {
+      for (int j = j0; j < j1; ++j) {
+        const double dx = x[j] - xi, dy = y[j] - yi, cut = ri + r[j] + skin;
+        if (dx * dx + dy * dy < cut * cut) d.loc_j.push_back(j);
+      }
+    };
+    scan(i + 1, cell_start_[c + 1]);
+    if (cx + 1 < cnx_) scan(cell_start_[c + 1], cell_start_[c + 2]);
+    if (cy + 1 < cny_) {
+      const int ca = c + cnx_;
+      scan(cell_start_[cx > 0 ? ca - 1 : ca], cell_start_[cx + 1 < cnx_ ? ca + 2 : ca + 1]);
+    }
+    // Tangential springs of pairs already listed (old indices through order_).
+    const int oi = order_[i];
+    for (int k = before; k < static_cast<int>(d.loc_j.size()); ++k) {
+      const int oj = order_[d.loc_j[k]];
+      const int a = std::min(oi, oj), b = std::max(oi, oj);
+      double xi_t = 0;
+      for (int o = old_start_[a]; o < old_start_[a + 1]; ++o)
+        if (old_j_[o] == b) {
+          xi_t = old_xi_[o];
+          break;
+        }
+      d.loc_xi.push_back(xi_t);
+    }
+    d.row_count[i - p0] = static_cast<int>(d.loc_j.size()) - before;
+  }
+}
+
+void DemSystem::rebuild_finish() {
+  nb_start_.assign(n_ + 1, 0);
+  for (int t = 0; t < nt_; ++t) {
+    const int p0 = range_begin(n_, t, nt_);
+    for (size_t k = 0; k < td_[t].row_count.size(); ++k) nb_start_[p0 + k + 1] = td_[t].row_count[k];
+  }
+  for (int i = 0; i < n_; ++i) nb_start_[i + 1] += nb_start_[i];
+  nb_j_.resize(nb_start_[n_]);
+  nb_xi_.resize(nb_start_[n_]);
+  for (int t = 0; t < nt_; ++t) {
+    const int off = nb_start_[range_begin(n_, t, nt_)];
+    std::copy(td_[t].loc_j.begin(), td_[t].loc_j.end(), nb_j_.begin() + off);
+    std::copy(td_[t].loc_xi.begin(), td_[t].loc_xi.end(), nb_xi_.begin() + off);
+  }
+  // Rows split so every thread gets about the same number of list entries.
+  row_split_.assign(nt_ + 1, n_);
+  row_split_[0] = 0;
+  const double total = nb_start_[n_] + 2.0 * n_;
+  int t = 1;
+  for (int i = 0; i < n_ && t < nt_; ++i)
+    if (nb_start_[i + 1] + 2.0 * (i + 1) >= total * t / nt_) row_split_[t++] = i + 1;
+  // Discs that can reach the wall before the next build.
+  near_wall_.clear();
+  if (walls_.n_elements() > 0) {
+    const double rc = walls_.min_radius - rmax_ - skin_;
+    const double rc2 = rc > 0 ? rc * rc : -1;
+    for (int i = 0; i < n_; ++i)
+      if (x_[i] * x_[i] + y_[i] * y_[i] >= rc2) near_wall_.push_back(i);
+  }
+  wall_split_.resize(nt_ + 1);
+  for (int k = 0; k <= nt_; ++k) wall_split_[k] = range_begin(static_cast<int>(near_wall_.size()), k, nt_);
+  xref_ = x_, yref_ = y_;
+  rebuild_needed_ = false;
+}
+
+// ---------------------------------------------------------------- contacts
+
+namespace {
+
+/// Normal force [N/m] of a contact with overlap delta [m], approach speed vn
+/// [m/s] and effective mass meff [kg/m] (contact_law.h); also the incremental
+/// normal stiffness and the normal damping coefficient the tangential spring
+/// and dashpot are scaled from.
+template <bool Hertz>
+inline double normal_force(const ContactParams& p, double sqrt_kpm, double delta, double vn, double meff,
+                           double& kn_inc, double& cn) {
+  const double k = p.k_fixed + p.k_per_mass * meff;
+  const double sk_m = p.k_fixed > 0 ? std::sqrt(k * meff) : meff * sqrt_kpm;  // sqrt(k m*)
+  if constexpr (Hertz) {
+    const double sd = std::sqrt(delta);
+    kn_inc = 1.5 * k * sd;                          // dF/d delta of k delta^1.5
+    cn = p.gamma * sk_m * std::sqrt(sd);            // alpha sqrt(k m*) delta^0.25 (Tsuji et al. 1992)
+    return k * delta * sd + cn * vn;
+  } else {
+    kn_inc = k;
+    cn = p.gamma * sk_m;                            // 2 zeta sqrt(k m*)
+    return k * delta + cn * vn;
+  }
+}
+
+/// Coulomb-capped tangential spring-dashpot (Cundall & Strack 1979). xi [m] is
+/// the spring stretch, updated in place; vt [m/s] the slip velocity of the
+/// contact point; returns the tangential force [N/m] along t.
+inline double tangential_force(double& xi, double vt, double dt, double kt, double ct, double fmax) {
+  xi += vt * dt;
+  double ft = -(kt * xi + ct * vt);
+  if (std::abs(ft) > fmax) {
+    ft = std::copysign(fmax, ft);
+    xi = kt > 0 ? -(ft + ct * vt) / kt : 0.0;  // the spring that gives the capped force (LAMMPS gran/history)
+  }
+  return ft;
+}
+
+/// Constant directional rolling torque [N m/m] on body i (Ai et al. 2011, model
+/// A): mu_r max(F_n, 0) R* against the relative rotation wrel [rad/s], no
+/// larger than what stops wrel within the step (so it never reverses it).
+inline double rolling_torque(double mu_r, double fn, double rstar, double wrel, double inv_i_sum, double dt) {
+  if (mu_r <= 0 || fn <= 0 || wrel == 0) return 0;
+  const double m = std::min(mu_r * fn * rstar, std::abs(wrel) / (dt * inv_i_sum));
+  return -std::copysign(m, wrel);
+}
+
+}  // namespace
+
+template <bool Hertz>
+void DemSystem::pair_forces(int t) {
+  ThreadData& d = td_[t];
+  const ContactParams& p = set_.particle;
+  const double sqrt_kpm = std::sqrt(p.k_per_mass);
+  const double dt = set_.dt, mu = p.friction, mu_r = p.rolling_resistance;
+  const double* __restrict x = x_.data();
+  const double* __restrict y = y_.data();
+  const double* __restrict vx = vx_.data();
+  const double* __restrict vy = vy_.data();
+  const double* __restrict w = w_.data();
+  const double* __restrict r = r_.data();
+  const double* __restrict invm = invm_.data();
+  const double* __restrict invI = invI_.data();
+  const int* __restrict nbj = nb_j_.data();
+  double* __restrict nbxi = nb_xi_.data();
+  double* __restrict bfx = d.fx.data();
+  double* __restrict bfy = d.fy.data();
+  double* __restrict btq = d.tq.data();
+  int* __restrict bnc = d.nc.data();
+  long long contacts = 0;
+  double max_ratio = d.max_ratio;
+  double elastic = 0;
+  for (int i = row_split_[t]; i < row_split_[t + 1]; ++i) {
+    const double xi = x[i], yi = y[i], vxi = vx[i], vyi = vy[i], wi = w[i], ri = r[i], invmi = invm[i],
+                 invIi = invI[i];
+    double fxi = 0, fyi = 0, tqi = 0;
+    int nci = 0;
+    for (int k = nb_start_[i]; k < nb_start_[i + 1]; ++k) {
+      const int j = nbj[k];
+      const double dx = x[j] - xi, dy = y[j] - yi, rsum = ri + r[j];
+      const double d2 = dx * dx + dy * dy;
+      if (d2 >= rsum * rsum) {
+        nbxi[k] = 0;
+        continue;
+      }
+      const double dist = std::sqrt(d2), inv_d = 1 / dist;
+      const double nx = dx * inv_d, ny = dy * inv_d;  // unit normal from i to j
+      const double delta = rsum - dist;
+      const double dvx = vxi - vx[j], dvy = vyi - vy[j];
+      const double vn = dvx * nx + dvy * ny;                     // approach speed, d delta / dt
+      const double vt = -dvx * ny + dvy * nx + wi * ri + w[j] * r[j];  // slip along t = (-ny, nx)
+      const double meff = 1 / (invmi + invm[j]);
+      double kn_inc, cn;
+      const double fn = normal_force<Hertz>(p, sqrt_kpm, delta, vn, meff, kn_inc, cn);
+      const double fnp = fn > 0 ? fn : 0.0;
+      double xi_t = nbxi[k];
+      const double kt = p.kt_ratio * kn_inc;
+      const double ft = tangential_force(xi_t, vt, dt, kt, p.ct_ratio * cn, mu * fnp);
+      nbxi[k] = xi_t;
+      // stored energy: int F d delta = k delta^2 / 2 (linear), 2/5 k delta^2.5 = kn_inc delta^2 / 3.75 (hertz)
+      elastic += (Hertz ? kn_inc * delta * delta / 3.75 : 0.5 * kn_inc * delta * delta) + 0.5 * kt * xi_t * xi_t;
+      const double rj = r[j];
+      const double mr =
+          rolling_torque(mu_r, fnp, ri * rj / rsum, wi - w[j], invIi + invI[j], dt);  // R* = ri rj / (ri + rj)
+      // force on i: -fn n + ft t; torque on i: ri ft + mr; on j the opposite force, torque rj ft - mr.
+      const double Fx = -fn * nx - ft * ny, Fy = -fn * ny + ft * nx;
+      fxi += Fx, fyi += Fy, tqi += ri * ft + mr;
+      bfx[j] -= Fx, bfy[j] -= Fy, btq[j] += rj * ft - mr;
+      ++bnc[j];
+      ++nci;
+      const double rmin = ri < rj ? ri : rj;
+      if (delta > max_ratio * rmin) max_ratio = delta / rmin;
+    }
+    bfx[i] += fxi, bfy[i] += fyi, btq[i] += tqi;
+    bnc[i] += nci;
+    contacts += nci;
+  }
+  d.pair_contacts += contacts;
+  d.max_ratio = max_ratio;
+  d.elastic_pair = elastic;
+}
+
+namespace {
+
+struct WallHit {
+  int element;    // face element, or the element starting at the touched node
+  int share;      // second element sharing a node contact's load (-1: none)
+  double delta;   // [m] overlap
+  double nbx, nby;  // body-frame unit normal, wall -> disc centre
+  double cbx, cby;  // body-frame contact point on the wall
+  bool face;
+};
+
+}  // namespace
+
+template <bool Hertz>
+void DemSystem::wall_forces(int t, bool first, const StepClock& clk) {
+  ThreadData& d = td_[t];
+  const WallMesh& W = walls_;
+  const ContactParams& p = set_.wall;
+  const double sqrt_kpm = std::sqrt(p.k_per_mass);
+  const double dt = set_.dt, mu = p.friction, mu_r = p.rolling_resistance, Om = set_.wall_omega;
+  const double ca = clk.c, sa = clk.s;
+  const double esc2 = set_.escape_radius > 0 ? set_.escape_radius * set_.escape_radius : 1e300;
+  const bool acc = accumulate_ && !first;
+  const bool rec = clk.record;
+  double wsum_x = 0, wsum_y = 0, elastic = 0;
+  for (int idx = wall_split_[t]; idx < wall_split_[t + 1]; ++idx) {
+    const int i = near_wall_[idx];
+    const double px = x_[i], py = y_[i], ri = r_[i];
+    const double rr2 = px * px + py * py;
+    const double rin = W.min_radius - ri;  // closer to the axis than this, no wall is in reach
+    if (rin > 0 && rr2 < rin * rin) continue;
+    if (rr2 > esc2) {
+      if (!d.fail)
+        fail(fmt::format("disc {} (radius {:.4g} m) left the mill at t = {:.4f} s: its centre is {:.4g} m from "
+                         "the axis, outside the shell ({:.4g} m): the time step ({:.3g} s) is too large for the "
+                         "contact stiffness; raise [dem] steps_per_collision (or lower time_step_s)",
+                         id_[i], ri, clk.time, std::sqrt(px * px + py * py), set_.escape_radius, dt));
+      d.fail = 1;
+      continue;
+    }
+    // Body frame: q = R(-angle) p.
+    const double qx = ca * px + sa * py, qy = -sa * px + ca * py;
+    const int c = W.cell_of(qx, qy);
+    if (c < 0) continue;
+    WallHit hits[8];
+    int nh = 0;
+    for (int k = W.cell_start[c]; k < W.cell_start[c + 1]; ++k) {
+      const int e = W.cell_elems[k];
+      const double dx = qx - W.ax[e], dy = qy - W.ay[e];
+      const double sd = dx * W.nx[e] + dy * W.ny[e];  // signed distance from the element's line
+      if (sd >= ri || sd <= -ri) continue;
+      const double tt = dx * W.ux[e] + dy * W.uy[e];
+      if (tt > 0 && tt < W.len[e]) {
+        if (sd <= 0) {
+          if (!d.fail)
+            fail(fmt::format("disc {} (radius {:.4g} m) passed through liner element {} at t = {:.4f} s (overlap "
+                             "larger than its radius): the contacts are too soft or the time step too large; give "
+                             "a shorter [dem] collision_time_s (or a larger stiffness) or more steps_per_collision",
+                             id_[i], ri, e, clk.time));
+          d.fail = 1;
+          continue;
+        }
+        if (nh < 8) hits[nh++] = {e, -1, ri - sd, W.nx[e], W.ny[e], W.ax[e] + tt * W.ux[e], W.ay[e] + tt * W.uy[e], true};
+      } else if (tt <= 0 && W.convex_start[e]) {
+        const int pe = W.prev[e];
+        if (pe >= 0 && dx * W.ux[pe] + dy * W.uy[pe] < 0) continue;  // not in the node's wedge
+        const double dist2 = dx * dx + dy * dy;
+        if (dist2 >= ri * ri || dist2 <= 0) continue;
+        const double dist = std::sqrt(dist2);
+        if (nh < 8) hits[nh++] = {e, pe, ri - dist, dx / dist, dy / dist, W.ax[e], W.ay[e], false};
+      } else if (tt >= W.len[e] && W.convex_end[e]) {
+        const double ex = qx - (W.ax[e] + W.len[e] * W.ux[e]), ey = qy - (W.ay[e] + W.len[e] * W.uy[e]);
+        const double dist2 = ex * ex + ey * ey;
+        if (dist2 >= ri * ri || dist2 <= 0) continue;
+        const double dist = std::sqrt(dist2);
+        if (nh < 8) hits[nh++] = {e, -1, ri - dist, ex / dist, ey / dist, qx - ex, qy - ey, false};
+      }
+    }
+    // Two faces meeting at a shallow concave node touch one disc once: keep the deeper.
+    for (int a = 0; a < nh; ++a)
+      for (int b = 0; b < nh; ++b) {
+        if (a == b || !hits[a].face || !hits[b].face || hits[a].delta < 0 || hits[b].delta < 0) continue;
+        if (W.next[hits[a].element] == hits[b].element && W.merge_next[hits[a].element]) {
+          if (hits[a].delta >= hits[b].delta) hits[b].delta = -1;
+          else hits[a].delta = -1;
+        }
+      }
+    // Contacts of this step against the springs of the last (matched by element, or a neighbour
+    // within two elements: a disc rolling over element joints keeps its spring).
+    int* slot_e = &wslot_elem_[static_cast<size_t>(i) * kWallSlots];
+    double* slot_xi = &wslot_xi_[static_cast<size_t>(i) * kWallSlots];
+    int old_e[kWallSlots];
+    double old_xi[kWallSlots];
+    for (int s = 0; s < kWallSlots; ++s) old_e[s] = slot_e[s], old_xi[s] = slot_xi[s], slot_e[s] = -1, slot_xi[s] = 0;
+    int nslot = 0;
+    double fxs = 0, fys = 0, tqs = 0;
+    int ncont = 0;
+    const double vxi = vx_[i], vyi = vy_[i], wi = w_[i], mi = m_[i], invIi = invI_[i];
+    for (int h = 0; h < nh; ++h) {
+      const WallHit& H = hits[h];
+      if (H.delta <= 0) continue;
+      // lab frame: n = R(angle) nb, c = R(angle) cb
+      const double nx = ca * H.nbx - sa * H.nby, ny = sa * H.nbx + ca * H.nby;
+      const double cx = ca * H.cbx - sa * H.cby, cy = sa * H.cbx + ca * H.cby;
+      const double wvx = -Om * cy, wvy = Om * cx;  // wall velocity at the contact point
+      const double rvx = vxi - wvx, rvy = vyi - wvy;  // centre velocity relative to the wall
+      const double vn = -(rvx * nx + rvy * ny);       // approach speed, d delta / dt
+      const double vt_body = -rvx * ny + rvy * nx;    // along t = (-ny, nx)
+      const double vt = vt_body - wi * ri;            // slip of the disc's contact point
+      double xi_t = 0;
+      bool continuing = false;
+      for (int s = 0; s < kWallSlots; ++s)
+        if (old_e[s] >= 0 && W.chain_distance(old_e[s], H.element) <= 2) {
+          xi_t = old_xi[s];
+          old_e[s] = -1;  // one spring continues one contact
+          continuing = true;
+          break;
+        }
+      double kn_inc, cn;
+      const double fn = normal_force<Hertz>(p, sqrt_kpm, H.delta, vn, mi, kn_inc, cn);
+      const double fnp = fn > 0 ? fn : 0.0;
+      const double kt = p.kt_ratio * kn_inc;
+      const double ft = tangential_force(xi_t, vt, dt, kt, p.ct_ratio * cn, mu * fnp);
+      elastic += (Hertz ? kn_inc * H.delta * H.delta / 3.75 : 0.5 * kn_inc * H.delta * H.delta) + 0.5 * kt * xi_t * xi_t;
+      const double mr = rolling_torque(mu_r, fnp, ri, wi - Om, invIi, dt);
+      const double Fx = fn * nx - ft * ny, Fy = fn * ny + ft * nx;  // on the disc
+      fxs += Fx, fys += Fy;
+      tqs += -ri * ft + mr;  // contact point at -ri n: (-ri n) x (ft t) = -ri ft
+      ++ncont;
+      if (nslot < kWallSlots) slot_e[nslot] = H.element, slot_xi[nslot] = xi_t, ++nslot;
+      if (H.delta > d.max_ratio * ri) d.max_ratio = H.delta / ri;
+      if (acc) {
+        const double aft = std::abs(ft), slip = std::abs(vt);
+        const double wgt = H.share >= 0 ? 0.5 * dt : dt;
+        for (int e : {H.element, H.share}) {
+          if (e < 0) continue;
+          d.ld_n[e] += fnp * wgt;
+          d.ld_s[e] += aft * wgt;
+          d.ld_ns[e] += fnp * slip * wgt;
+          d.ld_ss[e] += aft * slip * wgt;
+        }
+        d.drive_work += Om * (cx * Fy - cy * Fx) * dt;  // P = Omega x torque of the contact forces on the discs
+        if (!continuing && vn >= set_.impact_min_speed)
+          d.impacts.push_back({clk.step, id_[i], H.element, vn, std::abs(vt_body), free_steps_[i]});
+      }
+      if (rec) d.records.push_back({id_[i], H.element, -Fx, -Fy, cx, cy});
+    }
+    d.fx[i] += fxs, d.fy[i] += fys, d.tq[i] += tqs, d.nc[i] += ncont;
+    wsum_x += fxs, wsum_y += fys;
+    d.wall_contacts += ncont;
+  }
+  d.wall_fx = wsum_x, d.wall_fy = wsum_y;  // wall force this thread computed, for the impulse bookkeeping
+  d.elastic_wall = elastic;
+}
+
+// ---------------------------------------------------------------- integration
+
+void DemSystem::kick_drift(int t) {
+  ThreadData& d = td_[t];
+  const double dt = set_.dt, h = 0.5 * dt;
+  const int p0 = range_begin(n_, t, nt_), p1 = range_begin(n_, t + 1, nt_);
+  double maxd2 = 0;
+  for (int i = p0; i < p1; ++i) {
+    vx_[i] += h * fx_[i];  // fx_, fy_, tq_ hold the accelerations of the last gather
+    vy_[i] += h * fy_[i];
+    w_[i] += h * tq_[i];
+    x_[i] += dt * vx_[i];
+    y_[i] += dt * vy_[i];
+    const double dx = x_[i] - xref_[i], dy = y_[i] - yref_[i];
+    maxd2 = std::max(maxd2, dx * dx + dy * dy);
+  }
+  d.maxd2 = maxd2;
+  d.wimp_x += h * d.wall_fx, d.wimp_y += h * d.wall_fy;
+}
+
+void DemSystem::gather(int t, bool kick, bool do_check, bool drift_next) {
+  ThreadData& d = td_[t];
+  if (kick) ++d.steps_done;
+  double max_v2 = 0, maxd2 = 0;
+  int worst = -1;
+  bool nonfinite = false;
+  const double dt = set_.dt, h = 0.5 * dt, gx = set_.gravity_x, gy = set_.gravity_y;
+  const int p0 = range_begin(n_, t, nt_), p1 = range_begin(n_, t + 1, nt_);
+  double* __restrict x = x_.data();
+  double* __restrict y = y_.data();
+  double* __restrict vx = vx_.data();
+  double* __restrict vy = vy_.data();
+  double* __restrict w = w_.data();
+  const double* __restrict invm = invm_.data();
+  const double* __restrict invI = invI_.data();
+  for (int i = p0; i < p1; ++i) {
+    double fx = 0, fy = 0, tq = 0;
+    int nc = 0;
+    for (int u = 0; u < nt_; ++u) {
+      ThreadData& b = td_[u];
+      fx += b.fx[i], fy += b.fy[i], tq += b.tq[i], nc += b.nc[i];
+      b.fx[i] = 0, b.fy[i] = 0, b.tq[i] = 0, b.nc[i] = 0;
+    }
+    const double ax = fx * invm[i] + gx, ay = fy * invm[i] + gy, aw = tq * invI[i];  // [m/s2], [rad/s2]
+    fx_[i] = ax, fy_[i] = ay, tq_[i] = aw;  // accelerations kept for the first kick of the next call
+    ncontact_[i] = nc;
+    if (kick) {
+      // end of this step: v(n+1) = v(n+1/2) + dt/2 a(n+1)
+      vx[i] += h * ax, vy[i] += h * ay, w[i] += h * aw;
+      free_steps_[i] = nc ? 0 : free_steps_[i] + 1;
+      if (do_check) {
+        const double v2 = vx[i] * vx[i] + vy[i] * vy[i];
+        if (!std::isfinite(v2 + x[i] + y[i] + w[i])) nonfinite = true, worst = i;
+        if (v2 > max_v2 && !nonfinite) max_v2 = v2, worst = i;
+      }
+    }
+    if (drift_next) {
+      // start of the next step: v(n+3/2) = v(n+1) + dt/2 a(n+1), x(n+2) = x(n+1) + dt v(n+3/2)
+      vx[i] += h * ax, vy[i] += h * ay, w[i] += h * aw;
+      x[i] += dt * vx[i], y[i] += dt * vy[i];
+      const double dx = x[i] - xref_[i], dy = y[i] - yref_[i];
+      maxd2 = std::max(maxd2, dx * dx + dy * dy);
+    }
+  }
+  if (do_check) d.max_v2 = max_v2, d.worst = worst, d.nonfinite = nonfinite;
+  d.checked = do_check;
+  if (kick) d.wimp_x += h * d.wall_fx, d.wimp_y += h * d.wall_fy;
+  if (drift_next) {
+    d.maxd2 = maxd2;
+    d.wimp_x += h * d.wall_fx, d.wimp_y += h * d.wall_fy;
+  }
+}
+
+std::string DemSystem::check_failure(long long step, double time) const {
+  double v2 = 0;
+  int worst = -1;
+  for (const auto& d : td_) {
+    if (d.nonfinite)
+      return fmt::format("disc {} has a non-finite position or velocity at t = {:.4f} s (step {}): the run blew up; "
+                         "reduce the time step (more [dem] steps_per_collision)",
+                         id_[d.worst], time, step);
+    if (d.max_v2 > v2) v2 = d.max_v2, worst = d.worst;
+  }
+  if (set_.speed_limit > 0 && v2 > set_.speed_limit * set_.speed_limit)
+    return fmt::format(
+        "energy growth: disc {} moves at {:.3g} m/s at t = {:.4f} s (step {}), more than the {:.3g} m/s the mill "
+        "can give a disc (liner speed plus a fall across the mill, doubled): the run blew up. Reduce the time step "
+        "(more [dem] steps_per_collision, or a smaller time_step_s) or lengthen collision_time_s",
+        id_[worst], std::sqrt(v2), time, step, set_.speed_limit);
+  return {};
+}
+
+void DemSystem::advance(long long steps) {
+  failed_ = 0;
+  failure_.clear();
+  for (auto& d : td_) d.fail = 0, d.checked = false;
+  const bool hertz = set_.particle.law == ContactLaw::Hertz;
+  const double half_skin2 = 0.25 * skin_ * skin_;
+  const int check_every = std::max(1, set_.check_interval);
+  const long long step0 = step_;
+  const bool record = record_next_;
+  record_next_ = false;
+  // Two barriers a step (after the drift, after the forces); every thread takes
+  // the same decisions from the same shared data, so only the list rebuild has
+  // work for one thread alone.
+  YieldingBarrier barrier(nt_);
+#pragma omp parallel num_threads(nt_)
+  {
+    const int t = omp_get_thread_num();
+    const long long s_begin = forces_valid_ ? 0 : -1;
+    for (long long s = s_begin; s < steps; ++s) {
+      const bool first = s < 0;
+      if (s == 0 && s_begin == 0) kick_drift(t);  // later steps were started by the last gather
+      barrier.wait();
+      // checks of the last gather, then the clock and the list decision (same on every thread)
+      if (!first && td_[0].checked) {
+        bool bad = false;
+        for (const auto& d : td_) bad |= d.nonfinite || (set_.speed_limit > 0 && d.max_v2 > set_.speed_limit * set_.speed_limit);
+        if (bad) {
+          if (t == 0) failed_ = 1;
+          break;
+        }
+      }
+      StepClock clk;
+      clk.step = step0 + (first ? 0 : s + 1);
+      clk.time = clk.step * set_.dt;
+      const double angle = set_.wall_angle0 + set_.wall_omega * clk.time;
+      clk.c = std::cos(angle), clk.s = std::sin(angle);
+      clk.record = record && s == 0;
+      bool rebuild = rebuild_needed_;
+      for (const auto& d : td_) rebuild |= d.maxd2 > half_skin2;
+      if (rebuild) {
+        if (t == 0) rebuild_prepare(clk.time);
+        barrier.wait();
+        rebuild_rows(t);
+        barrier.wait();
+        if (t == 0) rebuild_finish();
+        barrier.wait();
+      }
+      if (hertz) {
+        pair_forces<true>(t);
+        wall_forces<true>(t, first, clk);
+      } else {
+        pair_forces<false>(t);
+        wall_forces<false>(t, first, clk);
+      }
+      barrier.wait();
+      if (failed_) break;
+      const bool do_check = !first && (clk.step % check_every == 0 || s == steps - 1);
+      gather(t, !first, do_check, s + 1 < steps);
+    }
+  }
+  // the clock of the last completed step
+  long long done = 0;
+  for (const auto& d : td_) done = std::max(done, d.steps_done);
+  step_ = step0 + done;
+  time_ = step_ * set_.dt;
+  angle_ = set_.wall_angle0 + set_.wall_omega * time_;
+  cos_a_ = std::cos(angle_), sin_a_ = std::sin(angle_);
+  for (auto& d : td_) {
+    pair_contact_steps_ += d.pair_contacts, wall_contact_steps_ += d.wall_contacts;
+    d.pair_contacts = d.wall_contacts = 0;
+    max_overlap_ratio_ = std::max(max_overlap_ratio_, d.max_ratio);
+    d.steps_done = 0;
+  }
+  if (!failed_ && td_[0].checked) {
+    const std::string f = check_failure(step_, time_);
+    if (!f.empty()) failed_ = 1, failure_ = f;
+  } else if (failed_ && failure_.empty()) {
+    failure_ = check_failure(step_, time_);
+  }
+  if (failed_) throw SimulationError(failure_);
+  forces_valid_ = true;
+  if (accumulate_) accum_duration_ = (step_ - accum_start_step_) * set_.dt;
+}
+
+// ---------------------------------------------------------------- loads and diagnostics
+
+void DemSystem::set_accumulate(bool on) {
+  accumulate_ = on;
+  if (!on) return;
+  const int ne = walls_.n_elements();
+  for (auto& d : td_) {
+    d.ld_n.assign(ne, 0), d.ld_s.assign(ne, 0), d.ld_ns.assign(ne, 0), d.ld_ss.assign(ne, 0);
+    d.drive_work = 0;
+    d.impacts.clear();
+  }
+  accum_start_step_ = step_;
+  accum_duration_ = 0;
+}
+
+WallLoadSums DemSystem::load_sums() const {
+  WallLoadSums s;
+  const int ne = walls_.n_elements();
+  s.duration = accum_duration_;
+  s.normal.assign(ne, 0), s.shear.assign(ne, 0), s.normal_slip.assign(ne, 0), s.shear_slip.assign(ne, 0);
+  for (const auto& d : td_) {
+    if (d.ld_n.empty()) continue;
+    for (int e = 0; e < ne; ++e) {
+      s.normal[e] += d.ld_n[e], s.shear[e] += d.ld_s[e];
+      s.normal_slip[e] += d.ld_ns[e], s.shear_slip[e] += d.ld_ss[e];
+    }
+    s.drive_work += d.drive_work;
+  }
+  return s;
+}
+
+std::vector<ImpactRecord> DemSystem::take_impacts() {
+  std::vector<ImpactRecord> all;
+  for (auto& d : td_) {
+    all.insert(all.end(), d.impacts.begin(), d.impacts.end());
+    d.impacts.clear();
+  }
+  std::sort(all.begin(), all.end(), [](const ImpactRecord& a, const ImpactRecord& b) {
+    if (a.step != b.step) return a.step < b.step;
+    if (a.particle != b.particle) return a.particle < b.particle;
+    return a.element < b.element;
+  });
+  return all;
+}
+
+std::vector<WallContactRecord> DemSystem::take_contact_records() {
+  std::vector<WallContactRecord> all;
+  for (auto& d : td_) {
+    all.insert(all.end(), d.records.begin(), d.records.end());
+    d.records.clear();
+  }
+  std::sort(all.begin(), all.end(), [](const WallContactRecord& a, const WallContactRecord& b) {
+    return a.particle != b.particle ? a.particle < b.particle : a.element < b.element;
+  });
+  return all;
+}
+
+double DemSystem::kinetic_energy() const {
+  double e = 0;
+  for (int i = 0; i < n_; ++i)
+    e += 0.5 * m_[i] * (vx_[i] * vx_[i] + vy_[i] * vy_[i]) + 0.5 * w_[i] * w_[i] / invI_[i];
+  return e;
+}
+
+double DemSystem::elastic_energy() const {
+  double e = 0;
+  for (const auto& d : td_) e += d.elastic_pair + d.elastic_wall;
+  return e;
+}
+
+double DemSystem::potential_energy() const {
+  double e = 0;
+  for (int i = 0; i < n_; ++i) e -= m_[i] * (set_.gravity_x * x_[i] + set_.gravity_y * y_[i]);
+  return e;
+}
+
+double DemSystem::momentum_x() const {
+  double p = 0;
+  for (int i = 0; i < n_; ++i) p += m_[i] * vx_[i];
+  return p;
+}
+
+double DemSystem::momentum_y() const {
+  double p = 0;
+  for (int i = 0; i < n_; ++i) p += m_[i] * vy_[i];
+  return p;
+}
+
+double DemSystem::wall_impulse_x() const {
+  double s = 0;
+  for (const auto& d : td_) s += d.wimp_x;
+  return s;
+}
+
+double DemSystem::wall_impulse_y() const {
+  double s = 0;
+  for (const auto& d : td_) s += d.wimp_y;
+  return s;
+}
+
+}  // namespace linerlife
