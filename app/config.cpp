@@ -103,6 +103,7 @@ const Schema& config_schema() {
     add_charge_keys(s);
     add_liner_keys(s);
     add_model_keys(s);
+    add_dem_keys(s);
     return s;
   }();
   return schema;
@@ -138,6 +139,8 @@ void check_and_resolve(Config& c) {
             fmt::format("ball_filling = {} is larger than filling = {}: the balls are part of the charge, so "
                         "0 <= ball_filling <= filling",
                         c.charge.ball_filling, c.charge.filling));
+
+  check_dem_keys(c);
 
   // liner design
   LinerDesign& L = c.liner;

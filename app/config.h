@@ -81,6 +81,10 @@ void add_mill_keys(Schema& s);
 void add_charge_keys(Schema& s);
 void add_liner_keys(Schema& s);
 void add_model_keys(Schema& s);
+void add_dem_keys(Schema& s);
+
+/// The cross-key rules of [dem] (config_schema_dem.cpp); throws InputError.
+void check_dem_keys(const Config& c);
 
 /// Parses and checks a configuration: TOML syntax, unknown sections and keys,
 /// types, ranges, missing required keys and the cross-key rules. Throws

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "charge/dem/dem_model.h"
 #include "geometry/errors.h"
 
 namespace linerlife {
@@ -11,6 +12,8 @@ namespace linerlife {
 const std::vector<ChargeModelEntry>& charge_models() {
   static const std::vector<ChargeModelEntry> table = {
       // {name, description, resolves_impacts, resolves_abrasion, make}
+      {"dem", "2D soft-disc DEM slice on the liner surface (the accuracy reference; docs/models/dem.md)", true,
+       true, make_dem_model},
   };
   return table;
 }

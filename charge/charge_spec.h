@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include "charge/dem/dem_spec.h"
+
 namespace linerlife {
 
 /// The mill charge (reference/charge-models.md §1 symbols in brackets).
@@ -20,6 +22,7 @@ struct ModelSpec {
   std::string charge = "layer";   // "empirical" | "layer" | "dem"
   std::string variant = "1.2";    // layer model version of thesis §4.6: "1.0" | "1.1" | "1.2"
   double time_step_s = 0.01;      // [s] time step of the layer model
+  DemSpec dem;                    // the [dem] section: parameters of the DEM model
 };
 
 }  // namespace linerlife

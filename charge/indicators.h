@@ -47,6 +47,11 @@ struct RunStats {
   double wall_s = 0;        // [s] wall-clock time of the run
   double realtime_ratio = 0;  // simulated_s / wall_s
   long long steps = 0;      // time steps taken
+  // Particle models (dem) only; 0 otherwise. For `linerlife charge --json`.
+  long long particles = 0;          // discs simulated
+  double particle_steps_per_s = 0;  // [1/s] particles x steps per second of wall time while stepping
+  double time_step_s = 0;           // [s] DEM time step
+  double contacts_per_s = 0;        // [1/s] contact evaluations per second of wall time while stepping
 };
 
 }  // namespace linerlife

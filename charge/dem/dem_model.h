@@ -1,0 +1,68 @@
+// dem_model.h - the `dem` charge model (DESIGN.md §2; docs/models/dem.md):
+// a 2D soft-disc DEM slice of the mill whose walls are the liner surface as it
+// is, turning with the mill. The accuracy reference of the charge models.
+#pragma once
+
+#include <memory>
+
+#include "charge/charge_model.h"
+#include "charge/dem/contact_law.h"
+#include "charge/dem/dem_system.h"
+#include "charge/dem/particle_set.h"
+
+namespace linerlife {
+
+/// Contact durations below this many time steps are refused (InputError).
+/// From the restitution study in docs/models/dem.md §2: below it the measured
+/// restitution is off by more than 5 % and dense beds can go unstable.
+constexpr double kDemMinStepsPerCollision = 8;
+
+/// What a DEM run derived and measured (the command's --json reads
+/// RunStats; benchmarks and docs read this).
+struct DemRunInfo {
+  int particles = 0, balls = 0, rocks = 0;
+  double coarse_grain = 1;            // [-]
+  double collision_time_s = 0;        // [s] shortest contact duration the step is set from
+  double time_step_s = 0;             // [s]
+  double steps_per_collision = 0;     // [-] collision_time_s / time_step_s
+  double particle_stiffness = 0;      // [N/m per m] k_n of two of the smallest discs (linear) or k_h (hertz)
+  double settle_s = 0, average_s = 0;  // [s] simulated
+  long long steps = 0;
+  int threads = 1;
+  double wall_s = 0;                  // [s] whole run, setup included
+  double integrate_wall_s = 0;        // [s] time stepping only
+  double particle_steps_per_s = 0;    // [1/s] particles x steps / integrate_wall_s
+  double contacts_per_s = 0;          // [1/s] contact evaluations (particle + wall) per second of integration
+  double mean_contacts = 0;           // [-] coordination number (particle contacts count for both discs, wall contacts once)
+  long long list_builds = 0;
+  double max_overlap_ratio = 0;       // [-] largest overlap over the smaller radius
+  long long impacts = 0;
+  double drive_power_w_per_m = 0;     // [W/m]
+};
+
+/// Everything derived before the first step (exposed for tests and benchmarks).
+struct DemSetup {
+  ParticleSet particles;
+  DemParticles initial;    // placed
+  DemSettings settings;    // contact parameters, time step, rotation, threads, limits
+  WallMesh walls;
+  double collision_time_s = 0;   // [s] shortest contact duration
+  double revolution_s = 0;       // [s] one mill revolution
+  double r_eff = 0, r_crest = 0, free_area = 0;
+  double mean_diameter = 0;      // [m] number-mean disc diameter
+  double v_ref = 0;              // [m/s] liner speed omega r_eff
+};
+
+/// Checks the [dem] parameters against the mill and derives the setup.
+/// Throws InputError ("dem.<key>", value, what is allowed) for inputs the
+/// model cannot take: a time step beyond the stable range, coarse-graining the
+/// scene does not allow, no liner surface, ...
+DemSetup make_dem_setup(const ChargeInput& in);
+
+/// Runs the model; info (optional) receives the run's figures.
+ChargeResult run_dem(const ChargeInput& in, DemRunInfo* info = nullptr);
+
+/// The table entry's factory (charge_models.cpp).
+std::unique_ptr<ChargeModel> make_dem_model();
+
+}  // namespace linerlife
