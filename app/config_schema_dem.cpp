@@ -63,7 +63,7 @@ void add_dem_keys(Schema& s) {
   k.push_back(dem_real("overlap_fraction", "-",
                        "Default collision time: the smallest disc meeting the liner at the liner speed overlaps this "
                        "share of its diameter",
-                       0.0, 0.2, true, false, 0.1, &DemSpec::overlap_fraction));
+                       0.0, 0.2, true, false, 0.05, &DemSpec::overlap_fraction));
   k.push_back(dem_real("steps_per_collision", "-",
                        "Time step = shortest collision time / this (refused below 8: unstable)", 8.0, 10000.0, false,
                        false, 15.0, &DemSpec::steps_per_collision));
@@ -81,7 +81,7 @@ void add_dem_keys(Schema& s) {
                            1.0, false, &DemSpec::rock_diameter_min_m, "default: a quarter of the ball diameter"));
   k.push_back(dem_real("rock_size_exponent", "-",
                        "Gates-Gaudin-Schuhmann modulus m of the rocks: mass passing (d / d_max)^m", 0.0, 3.0, true,
-                       false, 0.8, &DemSpec::rock_size_exponent));
+                       false, 0.5, &DemSpec::rock_size_exponent));
   k.push_back(dem_real("packing_fraction_2d", "-",
                        "Solid area fraction of the disc bed; sets the disc count and the mass scaling", 0.5, 0.9069,
                        false, false, 0.82, &DemSpec::packing_fraction_2d));

@@ -27,11 +27,21 @@ int wrap_index(int k, int n) { return ((k % n) + n) % n; }
 
 ParticleIndicators::ParticleIndicators(const ParticleIndicatorGeometry& g, const ParticleIndicatorOptions& o)
     : g_(g), o_(o) {
-  nb_ = std::max(8, static_cast<int>(std::lround(360.0 / o_.band_bin_deg)));
+  // band bins at least one mean diameter long, so the time average sees discs in each
+  const double min_band_deg = g_.mean_diameter / g_.r_crest * kDeg;
+  nb_ = std::max(8, static_cast<int>(std::lround(360.0 / std::max(o_.band_bin_deg, min_band_deg))));
   band_area_.assign(nb_, 0);
   ns_ = std::max(8, static_cast<int>(std::lround(360.0 / o_.grid_bin_deg)));
   nr_ = std::max(1, static_cast<int>(std::ceil(g_.r_crest / g_.mean_diameter)));
-  const size_t ng = static_cast<size_t>(nr_) * ns_;
+  ring_off_.resize(nr_ + 1), ring_ns_.resize(nr_), ring_bin_area_.resize(nr_);
+  ring_off_[0] = 0;
+  for (int ring = 0; ring < nr_; ++ring) {
+    const double ro = g_.r_crest - ring * g_.mean_diameter, ri = std::max(0.0, ro - g_.mean_diameter);
+    ring_ns_[ring] = std::max(1, static_cast<int>(std::lround(ns_ * 0.5 * (ro + ri) / g_.r_crest)));
+    ring_bin_area_[ring] = kPiI * (ro * ro - ri * ri) / ring_ns_[ring];
+    ring_off_[ring + 1] = ring_off_[ring] + ring_ns_[ring];
+  }
+  const size_t ng = static_cast<size_t>(ring_off_[nr_]);
   for (auto* v : {&grid_area_, &grid_flight_area_, &grid_mass_, &grid_mx_, &grid_my_, &grid_mvx_, &grid_mvy_,
                   &grid_mw_})
     v->assign(ng, 0);
@@ -45,6 +55,13 @@ int ParticleIndicators::ring_of(double r) const {
   return std::min(nr_ - 1, static_cast<int>((g_.r_crest - r) / g_.mean_diameter));
 }
 
+int ParticleIndicators::bin_of(int ring, double a) const {
+  a = std::fmod(a, 2 * kPiI);
+  if (a < 0) a += 2 * kPiI;
+  const int n = ring_ns_[ring];
+  return ring_off_[ring] + std::min(n - 1, static_cast<int>(a / (2 * kPiI) * n));
+}
+
 void ParticleIndicators::add_sample(const ParticleFrame& f) {
   ++samples_;
   const double band_in = g_.r_crest - o_.band_depth_diameters * g_.mean_diameter;
@@ -53,13 +70,13 @@ void ParticleIndicators::add_sample(const ParticleFrame& f) {
     const double a = angle_rad(x, y);
     const double area = kPiI * f.radius[i] * f.radius[i], m = f.mass[i];
     if (r >= band_in) band_area_[std::min(nb_ - 1, static_cast<int>(a / (2 * kPiI) * nb_))] += area;
-    const int s = std::min(ns_ - 1, static_cast<int>(a / (2 * kPiI) * ns_));
     const int ring = ring_of(r);
     if (ring < 0) {
+      const int s = std::min(ns_ - 1, static_cast<int>(a / (2 * kPiI) * ns_));
       pocket_mass_[s] += m, pocket_mx_[s] += m * x, pocket_my_[s] += m * y;
       continue;
     }
-    const size_t k = static_cast<size_t>(ring) * ns_ + s;
+    const size_t k = static_cast<size_t>(bin_of(ring, a));
     grid_area_[k] += area;
     if (f.contacts[i] == 0) grid_flight_area_[k] += area;
     grid_mass_[k] += m, grid_mx_[k] += m * x, grid_my_[k] += m * y;
@@ -93,7 +110,7 @@ void ParticleIndicators::finish(Indicators& out) const {
   }
   if (samples_ == 0) return;
 
-  // --- toe and shoulder: where the liner band's occupancy crosses half its peak ---
+  // --- toe and shoulder: where the liner band's occupancy crosses the threshold share of its peak ---
   std::vector<double> occ(nb_);
   for (int k = 0; k < nb_; ++k)
     occ[k] = (band_area_[wrap_index(k - 1, nb_)] + band_area_[k] + band_area_[wrap_index(k + 1, nb_)]) / 3.0;
@@ -118,33 +135,28 @@ void ParticleIndicators::finish(Indicators& out) const {
   const double arc = std::isnan(toe) ? 360.0 : wrap_deg(sense * (shoulder - toe));
   auto in_arc = [&](double a_deg) { return std::isnan(toe) || wrap_deg(sense * (a_deg - toe)) <= arc; };
 
-  // --- polar grid: occupancy, the bed's packing, en-masse bins ---
-  const double sector = 2 * kPiI / ns_;
-  std::vector<double> gocc(static_cast<size_t>(nr_) * ns_), bin_area(nr_);
-  for (int ring = 0; ring < nr_; ++ring) {
-    const double ro = g_.r_crest - ring * g_.mean_diameter, ri = std::max(0.0, ro - g_.mean_diameter);
-    bin_area[ring] = 0.5 * sector * (ro * ro - ri * ri);
-    for (int s = 0; s < ns_; ++s) {
-      const size_t k = static_cast<size_t>(ring) * ns_ + s;
-      gocc[k] = grid_area_[k] / (bin_area[ring] * samples_);
+  // --- polar grid: occupancy, the bed's packing fraction, en-masse bins ---
+  const size_t ng = grid_area_.size();
+  std::vector<double> gocc(ng);
+  std::vector<int> ring_of_bin(ng);
+  for (int ring = 0; ring < nr_; ++ring)
+    for (int k = ring_off_[ring]; k < ring_off_[ring + 1]; ++k) {
+      gocc[k] = grid_area_[k] / (ring_bin_area_[ring] * samples_);
+      ring_of_bin[k] = ring;
     }
-  }
   const double gmax = *std::max_element(gocc.begin(), gocc.end());
   double sum = 0;
   int cnt = 0;
   for (double v : gocc)
     if (v >= 0.5 * gmax) sum += v, ++cnt;
   const double phi_bed = cnt ? sum / cnt : 0;  // packing fraction of the bed
-  std::vector<char> em(gocc.size(), 0);
+  std::vector<char> em(ng, 0);
   double area = 0, M = 0, MX = 0, MY = 0;
-  for (int ring = 0; ring < nr_; ++ring)
-    for (int s = 0; s < ns_; ++s) {
-      const size_t k = static_cast<size_t>(ring) * ns_ + s;
-      if (phi_bed > 0 && gocc[k] >= o_.en_masse_threshold * phi_bed) {
-        em[k] = 1;
-        area += bin_area[ring];
-        M += grid_mass_[k], MX += grid_mx_[k], MY += grid_my_[k];
-      }
+  for (size_t k = 0; k < ng; ++k)
+    if (phi_bed > 0 && gocc[k] >= o_.en_masse_threshold * phi_bed) {
+      em[k] = 1;
+      area += ring_bin_area_[ring_of_bin[k]];
+      M += grid_mass_[k], MX += grid_mx_[k], MY += grid_my_[k];
     }
   for (int s = 0; s < ns_; ++s)
     if (in_arc((s + 0.5) * 360.0 / ns_)) M += pocket_mass_[s], MX += pocket_mx_[s], MY += pocket_my_[s];
@@ -155,45 +167,45 @@ void ParticleIndicators::finish(Indicators& out) const {
   }
 
   // --- centre of circulation: the interior en-masse bin with the slowest mean velocity ---
+  auto centre_angle = [&](int ring, int k) { return (k - ring_off_[ring] + 0.5) * 2 * kPiI / ring_ns_[ring]; };
   int best = -1;
   double best_v = std::numeric_limits<double>::max();
   for (int ring = 1; ring + 1 < nr_; ++ring)
-    for (int s = 0; s < ns_; ++s) {
-      const size_t k = static_cast<size_t>(ring) * ns_ + s;
+    for (int k = ring_off_[ring]; k < ring_off_[ring + 1]; ++k) {
       if (!em[k] || grid_mass_[k] <= 0) continue;
-      const bool interior = em[k - ns_] && em[k + ns_] && em[static_cast<size_t>(ring) * ns_ + wrap_index(s - 1, ns_)] &&
-                            em[static_cast<size_t>(ring) * ns_ + wrap_index(s + 1, ns_)];
+      const double a = centre_angle(ring, k), da = 2 * kPiI / ring_ns_[ring];
+      const bool interior = em[bin_of(ring - 1, a)] && em[bin_of(ring + 1, a)] && em[bin_of(ring, a - da)] &&
+                            em[bin_of(ring, a + da)];
       if (!interior) continue;
       const double v = std::hypot(grid_mvx_[k], grid_mvy_[k]) / grid_mass_[k];
-      if (v < best_v) best_v = v, best = static_cast<int>(k);
+      if (v < best_v) best_v = v, best = k;
     }
   if (best < 0) return;
-  const int coc_ring = best / ns_;
-  const double coc_x = grid_mx_[best] / grid_mass_[best], coc_y = grid_my_[best] / grid_mass_[best];
+  const int coc_ring = ring_of_bin[best];
+  const double coc_a = angle_rad(grid_mx_[best], grid_my_[best]);
   out.n_layers = coc_ring;  // rings of one mean diameter between the lifter crests and the centre of circulation
 
   // --- layer speeds: rings within +-layer_window of the centre of circulation's angle ---
-  const int half = std::max(0, static_cast<int>(std::lround(o_.layer_window_deg / (360.0 / ns_))));
-  const int s0 = std::min(ns_ - 1, static_cast<int>(angle_rad(coc_x, coc_y) / sector));
+  const double win = o_.layer_window_deg / kDeg;
   for (int ring = 0; ring < coc_ring; ++ring) {
     double m = 0, mw = 0;
-    for (int ds = -half; ds <= half; ++ds) {
-      const size_t k = static_cast<size_t>(ring) * ns_ + wrap_index(s0 + ds, ns_);
-      m += grid_mass_[k], mw += grid_mw_[k];
+    for (int k = ring_off_[ring]; k < ring_off_[ring + 1]; ++k) {
+      double da = std::fmod(centre_angle(ring, k) - coc_a + 3 * kPiI, 2 * kPiI) - kPiI;
+      if (std::abs(da) <= win) m += grid_mass_[k], mw += grid_mw_[k];
     }
     out.layer_speed_rpm.push_back(m > 0 ? sense * mw / m * 60.0 / (2 * kPiI) : nan);
   }
 
   // --- trajectories: rings where airborne discs are dense just past the shoulder ---
   if (!std::isnan(shoulder)) {
-    const int nwin = std::max(1, static_cast<int>(std::lround(o_.flight_window_deg / (360.0 / ns_))));
-    const int sh = std::min(ns_ - 1, static_cast<int>(shoulder / 360.0 * ns_));
+    const double sh = shoulder / kDeg, fw = o_.flight_window_deg / kDeg;
     for (int ring = 0; ring < nr_; ++ring) {
       double fa = 0, ba = 0;
-      for (int w = 0; w < nwin; ++w) {
-        const size_t k = static_cast<size_t>(ring) * ns_ + wrap_index(sh + sgn * w, ns_);
+      for (int k = ring_off_[ring]; k < ring_off_[ring + 1]; ++k) {
+        const double past = std::fmod(sense * (centre_angle(ring, k) - sh) + 4 * kPiI, 2 * kPiI);  // past the shoulder
+        if (past > fw) continue;
         fa += grid_flight_area_[k];
-        ba += bin_area[ring] * samples_;
+        ba += ring_bin_area_[ring] * samples_;
       }
       if (ba > 0 && fa / ba >= o_.flight_threshold * phi_bed) ++out.n_trajectories;
     }

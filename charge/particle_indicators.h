@@ -70,14 +70,19 @@ class ParticleIndicators {
 
  private:
   int ring_of(double r) const;
+  int bin_of(int ring, double angle_rad) const;  // flat index of the bin of `ring` holding the angle
   ParticleIndicatorGeometry g_;
   ParticleIndicatorOptions o_;
   int samples_ = 0;
   // liner band
   int nb_ = 0;
   std::vector<double> band_area_;        // [m2 x samples] disc area with centres in each band bin
-  // polar grid: rings of one mean diameter inside the crest circle, sectors of grid_bin_deg
+  // polar grid: rings of one mean diameter inside the crest circle; the outer
+  // ring has sectors of grid_bin_deg, inner rings proportionally fewer, so every
+  // bin has about the same arc length and area
   int nr_ = 0, ns_ = 0;
+  std::vector<int> ring_off_, ring_ns_;  // flat index of each ring's first bin, its sector count
+  std::vector<double> ring_bin_area_;    // [m2] area of one bin of each ring
   std::vector<double> grid_area_, grid_flight_area_;   // [m2 x samples]
   std::vector<double> grid_mass_, grid_mx_, grid_my_;  // [kg/m x samples], mass-weighted positions
   std::vector<double> grid_mvx_, grid_mvy_;            // momentum sums

@@ -227,6 +227,7 @@ ChargeResult run_dem(const ChargeInput& in, DemRunInfo* info_out) {
   const long long last_rev_start = avg_steps - std::llround(setup.revolution_s / dt);
   long long done = 0, sample_no = 0;
   std::vector<double> seg_fx(surface.segments), seg_fy(surface.segments);
+  double sum_mx = 0;  // [kg m/m] sum over samples of sum m x
   while (done < avg_steps) {
     const long long chunk = std::min(sample_every, avg_steps - done);
     if (chunk > 1) sys.advance(chunk - 1);
@@ -240,6 +241,7 @@ ChargeResult run_dem(const ChargeInput& in, DemRunInfo* info_out) {
     f.x = sys.x().data(), f.y = sys.y().data(), f.vx = sys.vx().data(), f.vy = sys.vy().data();
     f.radius = sys.radius().data(), f.mass = sys.mass().data(), f.contacts = sys.contacts().data();
     pind.add_sample(f);
+    for (int i = 0; i < n; ++i) sum_mx += f.mass[i] * f.x[i];
     // force on each lifter row
     std::fill(seg_fx.begin(), seg_fx.end(), 0.0), std::fill(seg_fy.begin(), seg_fy.end(), 0.0);
     for (const auto& c : sys.take_contact_records()) {
@@ -345,6 +347,8 @@ ChargeResult run_dem(const ChargeInput& in, DemRunInfo* info_out) {
     info.max_overlap_ratio = sys.max_overlap_ratio();
     info.impacts = static_cast<long long>(L.impacts.size());
     info.drive_power_w_per_m = p_per_m;
+    info.torque_arm_power_w_per_m = setup.settings.wall_omega * kGravity * sum_mx / std::max<long long>(1, sample_no);
+    info.charge_mass_kg_per_m = ps.ball_mass_kg_per_m + ps.rock_mass_kg_per_m;
   }
   return res;
 }

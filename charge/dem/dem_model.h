@@ -37,7 +37,9 @@ struct DemRunInfo {
   long long list_builds = 0;
   double max_overlap_ratio = 0;       // [-] largest overlap over the smaller radius
   long long impacts = 0;
-  double drive_power_w_per_m = 0;     // [W/m]
+  double drive_power_w_per_m = 0;     // [W/m] P = T omega from the contact forces on the liner
+  double torque_arm_power_w_per_m = 0;  // [W/m] omega g <sum m x> over the samples (thesis eq. 4.3), a check
+  double charge_mass_kg_per_m = 0;    // [kg/m] all discs
 };
 
 /// Everything derived before the first step (exposed for tests and benchmarks).

@@ -21,7 +21,7 @@ struct DemSpec {
                                        //     liner speed (hertz); 0: from overlap_fraction
   double stiffness = 0;                // optional instead of collision_time_s: linear k_n [N/m per m of
                                        //     length], hertz k_h [N/m^1.5 per m]; 0: not given
-  double overlap_fraction = 0.1;       // [-] default rule for the collision time: the smallest particle
+  double overlap_fraction = 0.05;      // [-] default rule for the collision time: the smallest particle
                                        //     meeting the liner at the liner speed overlaps this share of its diameter
   double steps_per_collision = 15;     // [-] time step = shortest collision time / this
   double time_step_s = 0;              // [s] optional: the time step itself (refused above the stable limit)
@@ -30,7 +30,7 @@ struct DemSpec {
   double ball_size_spread = 0.1;       // [-] ball diameters uniform in [d (1 - spread), d] (stops 2D crystallisation)
   double rock_diameter_max_m = 0;      // [m] largest rock; 0: the ball diameter
   double rock_diameter_min_m = 0;      // [m] smallest rock simulated; 0: a quarter of the ball diameter
-  double rock_size_exponent = 0.8;     // [-] Gates-Gaudin-Schuhmann modulus m: mass passing (d / d_max)^m
+  double rock_size_exponent = 0.5;     // [-] Gates-Gaudin-Schuhmann modulus m: mass passing (d / d_max)^m
   double packing_fraction_2d = 0.82;   // [-] solid area fraction of the disc bed (random close packing, Berryman 1983)
   // --- run ---
   double revolutions = 3;              // [-] mill revolutions averaged (when ChargeInput::revolutions is 0)

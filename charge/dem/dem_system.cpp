@@ -16,9 +16,16 @@
 namespace linerlife {
 
 // Everything one thread writes during a step, padded against false sharing.
+/// Contact force, torque and contact count on one disc from one thread (one
+/// cache line half: the pair loop touches a partner once).
+struct ForceAcc {
+  double fx = 0, fy = 0;  // [N/m]
+  double tq = 0;          // [N m/m]
+  double nc = 0;          // contacts
+};
+
 struct alignas(64) DemSystem::ThreadData {
-  std::vector<double> fx, fy, tq;  // [N/m], [N m/m] contact forces on every disc from this thread's pairs
-  std::vector<int> nc;             // contacts counted by this thread
+  std::vector<ForceAcc> f;         // contact forces on every disc from this thread's contacts
   std::vector<int> row_count;      // list rebuild: partners of each row in this thread's particle range
   std::vector<int> loc_j;
   std::vector<double> loc_xi;
@@ -105,8 +112,7 @@ DemSystem::DemSystem(const DemSettings& settings, WallMesh walls, const DemParti
   nb_start_.assign(n_ + 1, 0);
   td_.resize(nt_);
   for (auto& t : td_) {
-    t.fx.assign(n_, 0), t.fy.assign(n_, 0), t.tq.assign(n_, 0);
-    t.nc.assign(n_, 0);
+    t.f.assign(n_, ForceAcc{});
   }
   if (walls_.n_elements() > 0 && walls_.cell_start.empty())
     build_wall_grid(walls_, rmax_ + skin_, std::max(0.5 * (rmax_ + skin_), 1e-3 * (walls_.max_radius + rmax_)));
@@ -354,10 +360,7 @@ void DemSystem::pair_forces(int t) {
   const double* __restrict invI = invI_.data();
   const int* __restrict nbj = nb_j_.data();
   double* __restrict nbxi = nb_xi_.data();
-  double* __restrict bfx = d.fx.data();
-  double* __restrict bfy = d.fy.data();
-  double* __restrict btq = d.tq.data();
-  int* __restrict bnc = d.nc.data();
+  ForceAcc* __restrict acc = d.f.data();
   long long contacts = 0;
   double max_ratio = d.max_ratio;
   double elastic = 0;
@@ -396,14 +399,14 @@ void DemSystem::pair_forces(int t) {
       // force on i: -fn n + ft t; torque on i: ri ft + mr; on j the opposite force, torque rj ft - mr.
       const double Fx = -fn * nx - ft * ny, Fy = -fn * ny + ft * nx;
       fxi += Fx, fyi += Fy, tqi += ri * ft + mr;
-      bfx[j] -= Fx, bfy[j] -= Fy, btq[j] += rj * ft - mr;
-      ++bnc[j];
+      ForceAcc& aj = acc[j];
+      aj.fx -= Fx, aj.fy -= Fy, aj.tq += rj * ft - mr, aj.nc += 1;
       ++nci;
       const double rmin = ri < rj ? ri : rj;
       if (delta > max_ratio * rmin) max_ratio = delta / rmin;
     }
-    bfx[i] += fxi, bfy[i] += fyi, btq[i] += tqi;
-    bnc[i] += nci;
+    ForceAcc& ai = acc[i];
+    ai.fx += fxi, ai.fy += fyi, ai.tq += tqi, ai.nc += nci;
     contacts += nci;
   }
   d.pair_contacts += contacts;
@@ -558,7 +561,8 @@ void DemSystem::wall_forces(int t, bool first, const StepClock& clk) {
       }
       if (rec) d.records.push_back({id_[i], H.element, -Fx, -Fy, cx, cy});
     }
-    d.fx[i] += fxs, d.fy[i] += fys, d.tq[i] += tqs, d.nc[i] += ncont;
+    ForceAcc& ai = d.f[i];
+    ai.fx += fxs, ai.fy += fys, ai.tq += tqs, ai.nc += ncont;
     wsum_x += fxs, wsum_y += fys;
     d.wall_contacts += ncont;
   }
@@ -602,16 +606,19 @@ void DemSystem::gather(int t, bool kick, bool do_check, bool drift_next) {
   const double* __restrict invm = invm_.data();
   const double* __restrict invI = invI_.data();
   for (int i = p0; i < p1; ++i) {
-    double fx = 0, fy = 0, tq = 0;
-    int nc = 0;
-    for (int u = 0; u < nt_; ++u) {
-      ThreadData& b = td_[u];
-      fx += b.fx[i], fy += b.fy[i], tq += b.tq[i], nc += b.nc[i];
-      b.fx[i] = 0, b.fy[i] = 0, b.tq[i] = 0, b.nc[i] = 0;
+    ForceAcc a = td_[0].f[i];
+    td_[0].f[i] = ForceAcc{};
+    for (int u = 1; u < nt_; ++u) {
+      ForceAcc& b = td_[u].f[i];
+      a.fx += b.fx, a.fy += b.fy, a.tq += b.tq, a.nc += b.nc;
+      b = ForceAcc{};
     }
-    const double ax = fx * invm[i] + gx, ay = fy * invm[i] + gy, aw = tq * invI[i];  // [m/s2], [rad/s2]
-    fx_[i] = ax, fy_[i] = ay, tq_[i] = aw;  // accelerations kept for the first kick of the next call
-    ncontact_[i] = nc;
+    const double ax = a.fx * invm[i] + gx, ay = a.fy * invm[i] + gy, aw = a.tq * invI[i];  // [m/s2], [rad/s2]
+    const int nc = static_cast<int>(a.nc);
+    if (!drift_next) {  // kept for the first kick of the next call, and for the caller
+      fx_[i] = ax, fy_[i] = ay, tq_[i] = aw;
+      ncontact_[i] = nc;
+    }
     if (kick) {
       // end of this step: v(n+1) = v(n+1/2) + dt/2 a(n+1)
       vx[i] += h * ax, vy[i] += h * ay, w[i] += h * aw;

@@ -1,0 +1,209 @@
+// The dem charge model on a pilot mill: indicators and loads from particle
+// data, the frame of a clockwise mill, repeatability, refusals (issue 6 §1, §3).
+#include <cmath>
+#include <numeric>
+
+#include <catch2/catch.hpp>
+
+#include "charge/charge_model.h"
+#include "charge/dem/dem_model.h"
+#include "geometry/build_liner_surface.h"
+#include "geometry/errors.h"
+
+using namespace linerlife;
+
+namespace {
+
+/// Pilot test 13 of thesis Table 4.1 (data/mills/pilot_test_13.toml): 0.762 m
+/// mill, 29 rpm, 4 lifters, 30 % filling of 0.05 m balls: about 60 discs.
+struct Pilot {
+  Mill mill;
+  LinerDesign liner;
+  LinerSurface surface;
+  ChargeInput in;
+  explicit Pilot(Rotation rot = Rotation::Cw, double ball_d = 0.05) {
+    mill.diameter_m = 0.762;
+    mill.length_m = 0.381;
+    mill.speed_rpm = 29;
+    mill.rotation = rot;
+    liner.segments = 4;
+    liner.design = {0.005, 0.025, 0.025, 5, 5, 0};
+    liner.element_size_m = 0.002;
+    liner.density_kg_m3 = 7800;
+    surface = build_liner_surface(mill, liner);
+    in.mill = mill;
+    in.charge.filling = 0.3;
+    in.charge.ball_filling = 0.3;
+    in.charge.ball_diameter_m = ball_d;
+    in.charge.ball_density_kg_m3 = 7800;
+    in.charge.ore_density_kg_m3 = 2700;
+    in.model.charge = "dem";
+    in.model.dem.threads = 1;
+    in.model.dem.settle_revolutions = 1;
+    in.model.dem.revolutions = 2;
+    in.surface = &surface;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("dem is a row of the charge-model table", "[dem][model]") {
+  const ChargeModelEntry& e = find_charge_model("dem");
+  CHECK(std::string(e.name) == "dem");
+  CHECK(e.resolves_impacts);
+  CHECK(e.resolves_abrasion);
+  CHECK(e.make() != nullptr);
+}
+
+TEST_CASE("a pilot-mill run gives indicators and liner loads from particle data", "[dem][model]") {
+  Pilot p;
+  DemRunInfo info;
+  const ChargeResult r = run_dem(p.in, &info);
+  const Indicators& I = r.indicators;
+  CHECK(r.model == "dem");
+  INFO("toe " << I.toe_deg << " shoulder " << I.shoulder_deg << " power " << I.net_power_w_per_m);
+  // A clockwise mill in the physical frame: the charge rises on the left, the
+  // toe lies lower right (near 310 deg), the shoulder upper left (near 135 deg).
+  CHECK(I.toe_deg > 280);
+  CHECK(I.toe_deg < 340);
+  CHECK(I.shoulder_deg > 110);
+  CHECK(I.shoulder_deg < 190);
+  CHECK(I.com_angle_deg > 180);
+  CHECK(I.com_angle_deg < 270);
+  CHECK(I.com_radius_m > 0.1);
+  CHECK(I.com_radius_m < 0.381);
+  CHECK(I.charge_area_m2 > 0.5 * 0.3 * 0.44);
+  CHECK(I.charge_area_m2 < 2.0 * 0.3 * 0.44);
+  // Power P = T omega from the contact forces on the liner agrees with the torque
+  // arm of the charge's weight, omega g sum m x (thesis eq. 4.3), averaged over the
+  // same revolutions: in a steady charge the two torques balance.
+  CHECK(I.net_power_w_per_m > 0);
+  CHECK(info.torque_arm_power_w_per_m == Approx(I.net_power_w_per_m).epsilon(0.05));
+  CHECK(I.net_power_kw == Approx(I.net_power_w_per_m * 0.381 / 1000).epsilon(1e-12));
+  CHECK(I.gross_power_kw > I.net_power_kw);
+  CHECK(I.fraction_critical == Approx(29 / critical_speed_rpm(I.diameter_eff_m)).epsilon(1e-12));
+  CHECK(I.n_layers >= 1);
+  CHECK(!I.lifter_force_angle_deg.empty());
+  // Liner loads, per surface element.
+  const LinerLoads& L = r.loads;
+  REQUIRE(L.n_elements == p.surface.n_elements());
+  CHECK(L.duration_s == Approx(2 * 60 / 29.0).epsilon(0.01));
+  double sum_n = 0;
+  for (int e = 0; e < L.n_elements; ++e) {
+    CHECK(L.normal_force_n_per_m[e] >= 0);
+    CHECK(L.shear_force_n_per_m[e] >= 0);
+    if (L.normal_force_n_per_m[e] == 0) CHECK(L.slip_speed_m_s[e] == 0);
+    CHECK(L.shear_work_rate_w_per_m[e] >= 0);
+    sum_n += L.normal_force_n_per_m[e];
+  }
+  const double weight = info.charge_mass_kg_per_m * 9.81;
+  CHECK(sum_n > 0.5 * weight);  // the liner carries the charge (more with the centrifugal part)
+  CHECK(sum_n < 4.0 * weight);
+  REQUIRE(L.has_impacts);
+  REQUIRE(!L.impacts.empty());
+  for (const auto& ev : L.impacts) {
+    CHECK(ev.normal_speed_m_s >= p.in.model.dem.impact_min_speed_m_s);
+    CHECK(ev.mass_kg == Approx(7800 * 3.14159265358979 * std::pow(ev.diameter_m, 3) / 6).epsilon(1e-9));
+    CHECK(ev.rate_per_s > 0);
+  }
+  CHECK(I.direct_impact_fraction >= 0);
+  CHECK(I.direct_impact_fraction <= 1);
+  // statistics for `linerlife charge --json`
+  CHECK(r.stats.particles == info.particles);
+  CHECK(r.stats.time_step_s == info.time_step_s);
+  CHECK(r.stats.particle_steps_per_s > 0);
+  CHECK(r.stats.simulated_s == Approx(3 * 60 / 29.0).epsilon(0.01));
+}
+
+TEST_CASE("a clockwise mill is the mirror image of an anticlockwise one", "[dem][model]") {
+  Pilot cw(Rotation::Cw), ccw(Rotation::Ccw);
+  for (Pilot* p : {&cw, &ccw}) p->in.model.dem.revolutions = 3;
+  const Indicators a = run_dem(cw.in).indicators, b = run_dem(ccw.in).indicators;
+  auto mirror = [](double deg) { return std::fmod(540.0 - deg, 360.0); };  // theta -> 180 - theta
+  INFO("cw toe " << a.toe_deg << " shoulder " << a.shoulder_deg << "; ccw toe " << b.toe_deg << " shoulder "
+                 << b.shoulder_deg);
+  CHECK(mirror(b.toe_deg) == Approx(a.toe_deg).margin(8));  // statistical: different discs, same mill
+  CHECK(mirror(b.shoulder_deg) == Approx(a.shoulder_deg).margin(8));
+  CHECK(b.net_power_w_per_m == Approx(a.net_power_w_per_m).epsilon(0.1));
+}
+
+TEST_CASE("dem runs repeat exactly for a seed and thread count", "[dem][model]") {
+  for (int threads : {1, 2}) {
+    Pilot p;
+    p.in.model.dem.threads = threads;
+    p.in.model.dem.revolutions = 0.5;
+    p.in.model.dem.settle_revolutions = 0.5;
+    const ChargeResult a = run_dem(p.in), b = run_dem(p.in);
+    INFO(threads << " threads");
+    CHECK(a.indicators.net_power_w_per_m == b.indicators.net_power_w_per_m);
+    CHECK(a.indicators.toe_deg == b.indicators.toe_deg);
+    CHECK(a.loads.normal_force_n_per_m == b.loads.normal_force_n_per_m);
+    CHECK(a.loads.shear_work_rate_w_per_m == b.loads.shear_work_rate_w_per_m);
+    REQUIRE(a.loads.impacts.size() == b.loads.impacts.size());
+    for (size_t k = 0; k < a.loads.impacts.size(); ++k) {
+      CHECK(a.loads.impacts[k].element == b.loads.impacts[k].element);
+      CHECK(a.loads.impacts[k].normal_speed_m_s == b.loads.impacts[k].normal_speed_m_s);
+    }
+  }
+  // another seed gives another (but similar) run
+  Pilot p;
+  p.in.model.dem.revolutions = 0.5;
+  p.in.model.dem.settle_revolutions = 0.5;
+  const double a = run_dem(p.in).indicators.net_power_w_per_m;
+  p.in.model.dem.seed = 7;
+  CHECK(run_dem(p.in).indicators.net_power_w_per_m != a);
+}
+
+TEST_CASE("dem refuses time steps beyond the stable range and coarse-graining the mill cannot take",
+          "[dem][model]") {
+  auto refused = [](const ChargeInput& in, const std::string& key, const std::string& fragment) {
+    try {
+      make_dem_setup(in);
+      FAIL("accepted; expected a refusal naming " << key);
+    } catch (const InputError& e) {
+      CHECK(e.key() == key);
+      CHECK_THAT(e.what(), Catch::Contains(fragment));
+    }
+  };
+  {
+    Pilot p;
+    const DemSetup s = make_dem_setup(p.in);  // the derived step is echoed
+    CHECK(s.settings.dt == Approx(s.collision_time_s / p.in.model.dem.steps_per_collision).epsilon(1e-12));
+    p.in.model.dem.time_step_s = s.collision_time_s / 5;
+    refused(p.in, "dem.time_step_s", "stable");
+    p.in.model.dem.time_step_s = s.collision_time_s / 9;
+    CHECK_NOTHROW(make_dem_setup(p.in));
+  }
+  {
+    Pilot p;
+    p.in.model.dem.steps_per_collision = 4;
+    refused(p.in, "dem.steps_per_collision", "stable");
+  }
+  {
+    Pilot p(Rotation::Cw, 0.019);  // 19 mm balls: a 25 mm lifter holds discs up to 25 mm
+    p.in.model.dem.coarse_grain = 1.3;
+    CHECK_NOTHROW(make_dem_setup(p.in));
+    p.in.model.dem.coarse_grain = 2;
+    refused(p.in, "dem.coarse_grain", "allowed");
+  }
+  {
+    Pilot p;
+    p.in.model.dem.collision_time_s = 1e-3;
+    p.in.model.dem.stiffness = 1e6;
+    refused(p.in, "dem.stiffness", "not both");
+  }
+}
+
+TEST_CASE("coarse-graining keeps the charge mass and stretches the collision time", "[dem][model]") {
+  Pilot fine(Rotation::Cw, 0.019), coarse(Rotation::Cw, 0.019);
+  coarse.in.model.dem.coarse_grain = 1.25;
+  const DemSetup a = make_dem_setup(fine.in), b = make_dem_setup(coarse.in);
+  const auto mass = [](const DemSetup& s) {
+    return std::accumulate(s.particles.mass_kg_per_m.begin(), s.particles.mass_kg_per_m.end(), 0.0);
+  };
+  CHECK(mass(b) == Approx(mass(a)).epsilon(0.02));  // counts are rounded
+  CHECK(static_cast<double>(b.particles.size()) == Approx(a.particles.size() / (1.25 * 1.25)).epsilon(0.02));
+  CHECK(b.collision_time_s == Approx(1.25 * a.collision_time_s).epsilon(0.05));  // from the smallest disc
+  // an impact still reports the real ball
+  CHECK(b.particles.real_diameter_m[0] == Approx(2 * b.particles.radius_m[0] / 1.25).epsilon(1e-12));
+}
