@@ -24,6 +24,15 @@ struct ForceAcc {
   double nc = 0;          // contacts
 };
 
+/// One wall element packed in one cache line for the contact loop.
+struct alignas(64) DemSystem::PackedElement {
+  double ax, ay;  // [m] start node, body frame
+  double ux, uy;  // unit tangent
+  double nx, ny;  // unit normal into the particle side
+  double len;     // [m]
+  int convex_start, convex_end;
+};
+
 struct alignas(64) DemSystem::ThreadData {
   std::vector<ForceAcc> f;         // contact forces on every disc from this thread's contacts
   std::vector<int> row_count;      // list rebuild: partners of each row in this thread's particle range
@@ -116,6 +125,10 @@ DemSystem::DemSystem(const DemSettings& settings, WallMesh walls, const DemParti
   }
   if (walls_.n_elements() > 0 && walls_.cell_start.empty())
     build_wall_grid(walls_, rmax_ + skin_, std::max(0.5 * (rmax_ + skin_), 1e-3 * (walls_.max_radius + rmax_)));
+  packed_.resize(walls_.n_elements());
+  for (int e = 0; e < walls_.n_elements(); ++e)
+    packed_[e] = {walls_.ax[e], walls_.ay[e], walls_.ux[e], walls_.uy[e], walls_.nx[e],
+                  walls_.ny[e], walls_.len[e], walls_.convex_start[e], walls_.convex_end[e]};
   angle_ = set_.wall_angle0;
   cos_a_ = std::cos(angle_), sin_a_ = std::sin(angle_);
 }
@@ -359,6 +372,7 @@ void DemSystem::pair_forces(int t) {
   const double* __restrict invm = invm_.data();
   const double* __restrict invI = invI_.data();
   const int* __restrict nbj = nb_j_.data();
+  const int* __restrict nbs = nb_start_.data();
   double* __restrict nbxi = nb_xi_.data();
   ForceAcc* __restrict acc = d.f.data();
   long long contacts = 0;
@@ -369,12 +383,12 @@ void DemSystem::pair_forces(int t) {
                  invIi = invI[i];
     double fxi = 0, fyi = 0, tqi = 0;
     int nci = 0;
-    for (int k = nb_start_[i]; k < nb_start_[i + 1]; ++k) {
+    for (int k = nbs[i], kend = nbs[i + 1]; k < kend; ++k) {
       const int j = nbj[k];
       const double dx = x[j] - xi, dy = y[j] - yi, rsum = ri + r[j];
       const double d2 = dx * dx + dy * dy;
       if (d2 >= rsum * rsum) {
-        nbxi[k] = 0;
+        if (nbxi[k] != 0) nbxi[k] = 0;  // a read is cheaper than a store on every step
         continue;
       }
       const double dist = std::sqrt(d2), inv_d = 1 / dist;
@@ -439,9 +453,15 @@ void DemSystem::wall_forces(int t, bool first, const StepClock& clk) {
   const bool acc = accumulate_ && !first;
   const bool rec = clk.record;
   double wsum_x = 0, wsum_y = 0, elastic = 0;
+  const PackedElement* __restrict pel = packed_.data();
+  const int* __restrict cstart = W.cell_start.data();
+  const int* __restrict celems = W.cell_elems.data();
+  const double* __restrict x = x_.data();
+  const double* __restrict y = y_.data();
+  const double* __restrict r = r_.data();
   for (int idx = wall_split_[t]; idx < wall_split_[t + 1]; ++idx) {
     const int i = near_wall_[idx];
-    const double px = x_[i], py = y_[i], ri = r_[i];
+    const double px = x[i], py = y[i], ri = r[i];
     const double rr2 = px * px + py * py;
     const double rin = W.min_radius - ri;  // closer to the axis than this, no wall is in reach
     if (rin > 0 && rr2 < rin * rin) continue;
@@ -460,13 +480,14 @@ void DemSystem::wall_forces(int t, bool first, const StepClock& clk) {
     if (c < 0) continue;
     WallHit hits[8];
     int nh = 0;
-    for (int k = W.cell_start[c]; k < W.cell_start[c + 1]; ++k) {
-      const int e = W.cell_elems[k];
-      const double dx = qx - W.ax[e], dy = qy - W.ay[e];
-      const double sd = dx * W.nx[e] + dy * W.ny[e];  // signed distance from the element's line
+    for (int k = cstart[c], kend = cstart[c + 1]; k < kend; ++k) {
+      const int e = celems[k];
+      const PackedElement& E = pel[e];
+      const double dx = qx - E.ax, dy = qy - E.ay;
+      const double sd = dx * E.nx + dy * E.ny;  // signed distance from the element's line
       if (sd >= ri || sd <= -ri) continue;
-      const double tt = dx * W.ux[e] + dy * W.uy[e];
-      if (tt > 0 && tt < W.len[e]) {
+      const double tt = dx * E.ux + dy * E.uy;
+      if (tt > 0 && tt < E.len) {
         if (sd <= 0) {
           if (!d.fail)
             fail(fmt::format("disc {} (radius {:.4g} m) passed through liner element {} at t = {:.4f} s (overlap "
@@ -476,16 +497,16 @@ void DemSystem::wall_forces(int t, bool first, const StepClock& clk) {
           d.fail = 1;
           continue;
         }
-        if (nh < 8) hits[nh++] = {e, -1, ri - sd, W.nx[e], W.ny[e], W.ax[e] + tt * W.ux[e], W.ay[e] + tt * W.uy[e], true};
-      } else if (tt <= 0 && W.convex_start[e]) {
+        if (nh < 8) hits[nh++] = {e, -1, ri - sd, E.nx, E.ny, E.ax + tt * E.ux, E.ay + tt * E.uy, true};
+      } else if (tt <= 0 && E.convex_start) {
         const int pe = W.prev[e];
-        if (pe >= 0 && dx * W.ux[pe] + dy * W.uy[pe] < 0) continue;  // not in the node's wedge
+        if (pe >= 0 && dx * pel[pe].ux + dy * pel[pe].uy < 0) continue;  // not in the node's wedge
         const double dist2 = dx * dx + dy * dy;
         if (dist2 >= ri * ri || dist2 <= 0) continue;
         const double dist = std::sqrt(dist2);
-        if (nh < 8) hits[nh++] = {e, pe, ri - dist, dx / dist, dy / dist, W.ax[e], W.ay[e], false};
-      } else if (tt >= W.len[e] && W.convex_end[e]) {
-        const double ex = qx - (W.ax[e] + W.len[e] * W.ux[e]), ey = qy - (W.ay[e] + W.len[e] * W.uy[e]);
+        if (nh < 8) hits[nh++] = {e, pe, ri - dist, dx / dist, dy / dist, E.ax, E.ay, false};
+      } else if (tt >= E.len && E.convex_end) {
+        const double ex = qx - (E.ax + E.len * E.ux), ey = qy - (E.ay + E.len * E.uy);
         const double dist2 = ex * ex + ey * ey;
         if (dist2 >= ri * ri || dist2 <= 0) continue;
         const double dist = std::sqrt(dist2);
@@ -605,24 +626,34 @@ void DemSystem::gather(int t, bool kick, bool do_check, bool drift_next) {
   double* __restrict w = w_.data();
   const double* __restrict invm = invm_.data();
   const double* __restrict invI = invI_.data();
+  const double* __restrict xref = xref_.data();
+  const double* __restrict yref = yref_.data();
+  double* __restrict ax_out = fx_.data();
+  double* __restrict ay_out = fy_.data();
+  double* __restrict aw_out = tq_.data();
+  int* __restrict nc_out = ncontact_.data();
+  long long* __restrict free_steps = free_steps_.data();
+  ForceAcc* bufs[8];
+  const int nt = nt_;
+  for (int u = 0; u < nt && u < 8; ++u) bufs[u] = td_[u].f.data();
   for (int i = p0; i < p1; ++i) {
-    ForceAcc a = td_[0].f[i];
-    td_[0].f[i] = ForceAcc{};
-    for (int u = 1; u < nt_; ++u) {
-      ForceAcc& b = td_[u].f[i];
+    ForceAcc a = bufs[0][i];
+    bufs[0][i] = ForceAcc{};
+    for (int u = 1; u < nt; ++u) {
+      ForceAcc& b = u < 8 ? bufs[u][i] : td_[u].f[i];
       a.fx += b.fx, a.fy += b.fy, a.tq += b.tq, a.nc += b.nc;
       b = ForceAcc{};
     }
     const double ax = a.fx * invm[i] + gx, ay = a.fy * invm[i] + gy, aw = a.tq * invI[i];  // [m/s2], [rad/s2]
     const int nc = static_cast<int>(a.nc);
     if (!drift_next) {  // kept for the first kick of the next call, and for the caller
-      fx_[i] = ax, fy_[i] = ay, tq_[i] = aw;
-      ncontact_[i] = nc;
+      ax_out[i] = ax, ay_out[i] = ay, aw_out[i] = aw;
+      nc_out[i] = nc;
     }
     if (kick) {
       // end of this step: v(n+1) = v(n+1/2) + dt/2 a(n+1)
       vx[i] += h * ax, vy[i] += h * ay, w[i] += h * aw;
-      free_steps_[i] = nc ? 0 : free_steps_[i] + 1;
+      free_steps[i] = nc ? 0 : free_steps[i] + 1;
       if (do_check) {
         const double v2 = vx[i] * vx[i] + vy[i] * vy[i];
         if (!std::isfinite(v2 + x[i] + y[i] + w[i])) nonfinite = true, worst = i;
@@ -633,7 +664,7 @@ void DemSystem::gather(int t, bool kick, bool do_check, bool drift_next) {
       // start of the next step: v(n+3/2) = v(n+1) + dt/2 a(n+1), x(n+2) = x(n+1) + dt v(n+3/2)
       vx[i] += h * ax, vy[i] += h * ay, w[i] += h * aw;
       x[i] += dt * vx[i], y[i] += dt * vy[i];
-      const double dx = x[i] - xref_[i], dy = y[i] - yref_[i];
+      const double dx = x[i] - xref[i], dy = y[i] - yref[i];
       maxd2 = std::max(maxd2, dx * dx + dy * dy);
     }
   }

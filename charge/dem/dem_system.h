@@ -144,6 +144,7 @@ class DemSystem {
 
  private:
   struct ThreadData;
+  struct PackedElement;
   struct StepClock {
     long long step = 0;  // step the forces are evaluated for
     double time = 0;     // [s]
@@ -192,6 +193,7 @@ class DemSystem {
   std::vector<int> scratch_i_;
   std::vector<long long> scratch_l_;
   std::vector<ThreadData> td_;
+  std::vector<PackedElement> packed_;  // walls_ elements, one cache line each
   // time
   double time_ = 0, angle_ = 0, cos_a_ = 1, sin_a_ = 0;
   long long step_ = 0;

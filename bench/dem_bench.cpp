@@ -1,0 +1,116 @@
+// DEM speed benchmark (issue 6 §4; docs/benchmarks.md, ## DEM).
+//
+//   bench_dem scaling N THREADS REPS [STEPS]
+//     An all-ball charge in the Qiu mill (10.36 m, 64 lifters, 10.36 rpm,
+//     J = 0.24) with the ball size chosen for about N discs. The charge is
+//     placed and run for 1.5 s of mill time (the bed forms and starts to
+//     turn), then REPS times a fresh system on that state runs STEPS steps
+//     (default 2000) with THREADS threads. One line per repetition:
+//     particles, threads, steps, wall seconds, particle-steps/s, contacts/s.
+//
+//   bench_dem realtime CONFIG.toml THREADS REPS [REVOLUTIONS]
+//     The whole dem model (settling 1 revolution, then REVOLUTIONS, default 1,
+//     averaged, indicators and loads) on a configuration. One line per
+//     repetition: particles, threads, simulated s, wall s, real-time ratio,
+//     particle-steps/s.
+//
+// bench/dem_bench.sh runs both and prints the medians.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "app/config.h"
+#include "charge/dem/dem_model.h"
+#include "geometry/build_liner_surface.h"
+#include "geometry/errors.h"
+
+using namespace linerlife;
+
+namespace {
+
+int scaling(int n_target, int threads, int reps, long long steps) {
+  Config c = load_default_config();  // the Qiu mill
+  c.charge.ball_filling = c.charge.filling;  // balls only: one size, so N follows from the diameter
+  // N = phi J A / (pi d^2 / 4) for the mean disc of [0.9 d, d]: d from N
+  const double A = 0.25 * kPi * 9.96 * 9.96, phi = c.model.dem.packing_fraction_2d;
+  const double mean_sq = (0.81 + 0.9 + 1.0) / 3;  // <d^2> / d^2 for spread 0.1
+  c.charge.ball_diameter_m = std::sqrt(phi * c.charge.filling * A / (n_target * kPi / 4 * mean_sq));
+  const LinerSurface surface = build_liner_surface(c.mill, c.liner);
+  ChargeInput in;
+  in.mill = c.mill;
+  in.charge = c.charge;
+  in.model = c.model;
+  in.model.dem.threads = 2;
+  in.surface = &surface;
+  DemSetup setup = make_dem_setup(in);
+  DemSystem warm(setup.settings, setup.walls, setup.initial);
+  warm.advance(std::llround(1.5 / setup.settings.dt));
+  DemParticles state;
+  state.x = warm.x(), state.y = warm.y(), state.vx = warm.vx(), state.vy = warm.vy(), state.w = warm.w();
+  state.radius = warm.radius(), state.mass = warm.mass();
+  DemSettings set = setup.settings;
+  set.threads = threads;
+  set.wall_angle0 = warm.wall_angle();
+  for (int r = 0; r < reps; ++r) {
+    DemSystem sys(set, setup.walls, state);
+    sys.advance(10);  // first list build and force evaluation outside the timing
+    const long long c0 = sys.pair_contact_steps() + sys.wall_contact_steps();
+    const auto t0 = std::chrono::steady_clock::now();
+    sys.advance(steps);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const long long contacts = sys.pair_contact_steps() + sys.wall_contact_steps() - c0;
+    std::printf("scaling particles %d threads %d steps %lld wall_s %.4f particle_steps_per_s %.4g contacts_per_s %.4g "
+                "dt %.4g\n",
+                sys.size(), threads, steps, wall, sys.size() * static_cast<double>(steps) / wall, contacts / wall,
+                set.dt);
+    std::fflush(stdout);
+  }
+  return 0;
+}
+
+int realtime(const char* path, int threads, int reps, double revolutions) {
+  const Config c = load_config_file(path);
+  const LinerSurface surface = build_liner_surface(c.mill, c.liner);
+  ChargeInput in;
+  in.mill = c.mill;
+  in.charge = c.charge;
+  in.model = c.model;
+  in.model.dem.threads = threads;
+  in.model.dem.settle_revolutions = 1;
+  in.revolutions = revolutions;
+  in.surface = &surface;
+  for (int r = 0; r < reps; ++r) {
+    DemRunInfo info;
+    const ChargeResult res = run_dem(in, &info);
+    std::printf("realtime config %s particles %d threads %d simulated_s %.4f wall_s %.4f realtime_ratio %.4f "
+                "particle_steps_per_s %.4g dt %.4g\n",
+                path, info.particles, threads, res.stats.simulated_s, res.stats.wall_s, res.stats.realtime_ratio,
+                info.particle_steps_per_s, info.time_step_s);
+    std::fflush(stdout);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const std::string mode = argc > 1 ? argv[1] : "";
+    if (mode == "scaling" && argc >= 5)
+      return scaling(std::atoi(argv[2]), std::atoi(argv[3]), std::atoi(argv[4]), argc > 5 ? std::atoll(argv[5]) : 2000);
+    if (mode == "realtime" && argc >= 5)
+      return realtime(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), argc > 5 ? std::atof(argv[5]) : 1.0);
+    std::fprintf(stderr,
+                 "usage: bench_dem scaling N THREADS REPS [STEPS]\n"
+                 "       bench_dem realtime CONFIG.toml THREADS REPS [REVOLUTIONS]\n");
+    return 2;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "input error: %s\n", e.what());
+    return 2;
+  } catch (const SimulationError& e) {
+    std::fprintf(stderr, "simulation failed: %s\n", e.what());
+    return 3;
+  }
+}
