@@ -8,6 +8,9 @@
 //     (default 2000) with THREADS threads. One line per repetition:
 //     particles, threads, steps, wall seconds, particle-steps/s, contacts/s.
 //
+//   bench_dem state CONFIG.toml THREADS REPS [STEPS]
+//     The same timing on the charge of a configuration file.
+//
 //   bench_dem realtime CONFIG.toml THREADS REPS [REVOLUTIONS]
 //     The whole dem model (settling 1 revolution, then REVOLUTIONS, default 1,
 //     averaged, indicators and loads) on a configuration. One line per
@@ -30,13 +33,15 @@ using namespace linerlife;
 
 namespace {
 
-int scaling(int n_target, int threads, int reps, long long steps) {
-  Config c = load_default_config();  // the Qiu mill
-  c.charge.ball_filling = c.charge.filling;  // balls only: one size, so N follows from the diameter
-  // N = phi J A / (pi d^2 / 4) for the mean disc of [0.9 d, d]: d from N
-  const double A = 0.25 * kPi * 9.96 * 9.96, phi = c.model.dem.packing_fraction_2d;
-  const double mean_sq = (0.81 + 0.9 + 1.0) / 3;  // <d^2> / d^2 for spread 0.1
-  c.charge.ball_diameter_m = std::sqrt(phi * c.charge.filling * A / (n_target * kPi / 4 * mean_sq));
+int scaling(int n_target, int threads, int reps, long long steps, const char* config = nullptr) {
+  Config c = config ? load_config_file(config) : load_default_config();  // the Qiu mill
+  if (!config) {
+    c.charge.ball_filling = c.charge.filling;  // balls only: one size, so N follows from the diameter
+    // N = phi J A / (pi d^2 / 4) for the mean disc of [0.9 d, d]: d from N
+    const double A = 0.25 * kPi * 9.96 * 9.96, phi = c.model.dem.packing_fraction_2d;
+    const double mean_sq = (0.81 + 0.9 + 1.0) / 3;  // <d^2> / d^2 for spread 0.1
+    c.charge.ball_diameter_m = std::sqrt(phi * c.charge.filling * A / (n_target * kPi / 4 * mean_sq));
+  }
   const LinerSurface surface = build_liner_surface(c.mill, c.liner);
   ChargeInput in;
   in.mill = c.mill;
@@ -100,10 +105,13 @@ int main(int argc, char** argv) {
     const std::string mode = argc > 1 ? argv[1] : "";
     if (mode == "scaling" && argc >= 5)
       return scaling(std::atoi(argv[2]), std::atoi(argv[3]), std::atoi(argv[4]), argc > 5 ? std::atoll(argv[5]) : 2000);
+    if (mode == "state" && argc >= 5)
+      return scaling(0, std::atoi(argv[3]), std::atoi(argv[4]), argc > 5 ? std::atoll(argv[5]) : 2000, argv[2]);
     if (mode == "realtime" && argc >= 5)
       return realtime(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), argc > 5 ? std::atof(argv[5]) : 1.0);
     std::fprintf(stderr,
                  "usage: bench_dem scaling N THREADS REPS [STEPS]\n"
+                 "       bench_dem state CONFIG.toml THREADS REPS [STEPS]\n"
                  "       bench_dem realtime CONFIG.toml THREADS REPS [REVOLUTIONS]\n");
     return 2;
   } catch (const InputError& e) {

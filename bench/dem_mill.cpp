@@ -6,7 +6,8 @@
 // Usage: bench_dem_mill CONFIG.toml [key=value ...]
 //   keys: any [dem] key of the configuration (threads=2, coarse_grain=2,
 //   revolutions=1, settle_revolutions=0.5, steps_per_collision=15, ...)
-//   and json=1 for one JSON line instead of the table.
+//   and json=1 for one JSON line instead of the table, profile=1 for the
+//   occupancy of the liner band (the profile toe and shoulder come from).
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -27,7 +28,7 @@ int main(int argc, char** argv) {
   }
   try {
     Config c = load_config_file(argv[1]);
-    bool json = false;
+    bool json = false, profile = false;
     for (int a = 2; a < argc; ++a) {
       const std::string kv = argv[a];
       const auto eq = kv.find('=');
@@ -35,6 +36,10 @@ int main(int argc, char** argv) {
       const std::string k = kv.substr(0, eq), v = kv.substr(eq + 1);
       if (k == "json") {
         json = v == "1";
+        continue;
+      }
+      if (k == "profile") {
+        profile = v == "1";
         continue;
       }
       const KeySpec* spec = config_schema().find("dem", k);
@@ -61,12 +66,12 @@ int main(int argc, char** argv) {
           "\"list_builds\": %lld, \"steps\": %lld, \"toe_deg\": %.4g, \"shoulder_deg\": %.4g, \"power_w_per_m\": %.6g, "
           "\"net_power_kw\": %.6g, \"com_angle_deg\": %.4g, \"com_radius_m\": %.4g, \"charge_area_m2\": %.4g, "
           "\"n_layers\": %d, \"n_trajectories\": %d, \"impacts\": %lld, \"direct_impact_fraction\": %.4g, "
-          "\"max_overlap_ratio\": %.4g}\n",
+          "\"max_overlap_ratio\": %.4g, \"max_wall_overlap_ratio\": %.4g}\n",
           argv[1], info.particles, info.threads, info.coarse_grain, info.time_step_s, info.collision_time_s,
           r.stats.simulated_s, info.wall_s, info.integrate_wall_s, r.stats.realtime_ratio, info.particle_steps_per_s,
           info.contacts_per_s, info.mean_contacts, info.list_builds, info.steps, I.toe_deg, I.shoulder_deg,
           I.net_power_w_per_m, I.net_power_kw, I.com_angle_deg, I.com_radius_m, I.charge_area_m2, I.n_layers,
-          I.n_trajectories, info.impacts, I.direct_impact_fraction, info.max_overlap_ratio);
+          I.n_trajectories, info.impacts, I.direct_impact_fraction, info.max_overlap_ratio, info.max_wall_overlap_ratio);
       return 0;
     }
     fmt::print("{}: {} discs ({} balls, {} rocks), coarse_grain {}, {} threads\n", argv[1], info.particles, info.balls,
@@ -78,9 +83,9 @@ int main(int argc, char** argv) {
                r.stats.simulated_s, info.settle_s, info.average_s, info.wall_s, info.integrate_wall_s,
                r.stats.realtime_ratio);
     fmt::print("  {:.4g} particle-steps/s, {:.4g} contacts/s, coordination {:.2f}, {} list builds in {} steps, "
-               "max overlap {:.3f} of the radius\n",
+               "max overlap {:.3f} of the radius ({:.3f} at the liner)\n",
                info.particle_steps_per_s, info.contacts_per_s, info.mean_contacts, info.list_builds, info.steps,
-               info.max_overlap_ratio);
+               info.max_overlap_ratio, info.max_wall_overlap_ratio);
     fmt::print("  toe {:.1f} deg, shoulder {:.1f} deg, CoM {:.1f} deg at {:.3f} m, area {:.3f} m2, layers {}, "
                "trajectories {}\n",
                I.toe_deg, I.shoulder_deg, I.com_angle_deg, I.com_radius_m, I.charge_area_m2, I.n_layers,
@@ -92,6 +97,10 @@ int main(int argc, char** argv) {
                I.direct_impact_fraction);
     for (double v : I.layer_speed_rpm) fmt::print(" {:.1f}", v);
     fmt::print("\n");
+    if (profile) {
+      fmt::print("  liner band occupancy (angle deg, occupancy):\n");
+      for (const auto& [a, o] : info.band_occupancy) fmt::print("    {:.1f} {:.4f}\n", a, o);
+    }
     return 0;
   } catch (const InputError& e) {
     std::fprintf(stderr, "input error: %s\n", e.what());

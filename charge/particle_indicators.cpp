@@ -85,6 +85,15 @@ void ParticleIndicators::add_sample(const ParticleFrame& f) {
   }
 }
 
+std::vector<std::pair<double, double>> ParticleIndicators::band_profile() const {
+  std::vector<std::pair<double, double>> out;
+  const double band_in = g_.r_crest - o_.band_depth_diameters * g_.mean_diameter;
+  const double bin_area = kPiI * (g_.r_shell * g_.r_shell - band_in * band_in) / nb_;
+  for (int k = 0; k < nb_; ++k)
+    out.emplace_back((k + 0.5) * 360.0 / nb_, samples_ ? band_area_[k] / (bin_area * samples_) : 0.0);
+  return out;
+}
+
 void ParticleIndicators::add_lifter_force(double angle, double fn, double ft) {
   double a = std::fmod(angle, 2 * kPiI);
   if (a < 0) a += 2 * kPiI;

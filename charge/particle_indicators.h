@@ -9,6 +9,7 @@
 // so nothing is mirrored; `sense` only says which way the charge moves.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "charge/indicators.h"
@@ -67,6 +68,11 @@ class ParticleIndicators {
   void finish(Indicators& out) const;
 
   int samples() const { return samples_; }
+
+  /// Time-averaged occupancy of the liner band (disc area over band area) at
+  /// the centre angle [deg] of each band bin: the profile toe and shoulder are
+  /// read from (for charts and the documentation).
+  std::vector<std::pair<double, double>> band_profile() const;
 
  private:
   int ring_of(double r) const;

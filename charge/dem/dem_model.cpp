@@ -345,10 +345,12 @@ ChargeResult run_dem(const ChargeInput& in, DemRunInfo* info_out) {
                          (static_cast<double>(avg_steps) * n);
     info.list_builds = sys.list_builds();
     info.max_overlap_ratio = sys.max_overlap_ratio();
+    info.max_wall_overlap_ratio = sys.max_wall_overlap_ratio();
     info.impacts = static_cast<long long>(L.impacts.size());
     info.drive_power_w_per_m = p_per_m;
     info.torque_arm_power_w_per_m = setup.settings.wall_omega * kGravity * sum_mx / std::max<long long>(1, sample_no);
     info.charge_mass_kg_per_m = ps.ball_mass_kg_per_m + ps.rock_mass_kg_per_m;
+    info.band_occupancy = pind.band_profile();
   }
   return res;
 }

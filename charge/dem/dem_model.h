@@ -4,6 +4,8 @@
 #pragma once
 
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "charge/charge_model.h"
 #include "charge/dem/contact_law.h"
@@ -12,10 +14,10 @@
 
 namespace linerlife {
 
-/// Contact durations below this many time steps are refused (InputError).
-/// From the restitution study in docs/models/dem.md §2: below it the measured
-/// restitution is off by more than 5 % and dense beds can go unstable.
-constexpr double kDemMinStepsPerCollision = 8;
+/// Contact durations resolved by fewer time steps are refused (InputError).
+/// From the time-step study in docs/models/dem.md §2: the Qiu slice and pilot
+/// test 1 blow up at 2 steps a contact and degrade at 2.5; 5 keeps a factor 2.
+constexpr double kDemMinStepsPerCollision = 5;
 
 /// What a DEM run derived and measured (the command's --json reads
 /// RunStats; benchmarks and docs read this).
@@ -35,11 +37,13 @@ struct DemRunInfo {
   double contacts_per_s = 0;          // [1/s] contact evaluations (particle + wall) per second of integration
   double mean_contacts = 0;           // [-] coordination number (particle contacts count for both discs, wall contacts once)
   long long list_builds = 0;
-  double max_overlap_ratio = 0;       // [-] largest overlap over the smaller radius
+  double max_overlap_ratio = 0;       // [-] largest disc-disc overlap over the smaller radius
+  double max_wall_overlap_ratio = 0;  // [-] largest disc-liner overlap over the radius (1: through the liner)
   long long impacts = 0;
   double drive_power_w_per_m = 0;     // [W/m] P = T omega from the contact forces on the liner
   double torque_arm_power_w_per_m = 0;  // [W/m] omega g <sum m x> over the samples (thesis eq. 4.3), a check
   double charge_mass_kg_per_m = 0;    // [kg/m] all discs
+  std::vector<std::pair<double, double>> band_occupancy;  // (angle [deg], occupancy) of the liner band: toe and shoulder
 };
 
 /// Everything derived before the first step (exposed for tests and benchmarks).

@@ -23,7 +23,7 @@ struct DemSpec {
                                        //     length], hertz k_h [N/m^1.5 per m]; 0: not given
   double overlap_fraction = 0.05;      // [-] default rule for the collision time: the smallest particle
                                        //     meeting the liner at the liner speed overlaps this share of its diameter
-  double steps_per_collision = 10;     // [-] time step = shortest collision time / this
+  double steps_per_collision = 8;      // [-] time step = shortest collision time / this
   double time_step_s = 0;              // [s] optional: the time step itself (refused above the stable limit)
   // --- charge (docs/models/dem.md §3) ---
   double coarse_grain = 1;             // [-] s >= 1: every disc s times the media/rock diameter (Bierwisch et al. 2009)

@@ -46,7 +46,8 @@ struct alignas(64) DemSystem::ThreadData {
   std::vector<ImpactRecord> impacts;
   std::vector<WallContactRecord> records;
   long long pair_contacts = 0, wall_contacts = 0;
-  double max_ratio = 0;
+  double max_ratio = 0;       // largest particle-particle overlap / smaller radius
+  double max_wall_ratio = 0;  // largest wall overlap / radius
   double max_v2 = 0;  // [m2/s2] largest speed squared at the last check
   int worst = -1;     // disc with max_v2
   bool nonfinite = false;
@@ -119,6 +120,9 @@ DemSystem::DemSystem(const DemSettings& settings, WallMesh walls, const DemParti
   wslot_elem_.assign(static_cast<size_t>(n_) * kWallSlots, -1);
   wslot_xi_.assign(static_cast<size_t>(n_) * kWallSlots, 0.0);
   nb_start_.assign(n_ + 1, 0);
+  for (auto& v : shadow_d_) v.resize(n_);
+  shadow_id_.resize(n_), shadow_free_.resize(n_);
+  shadow_slot_e_.resize(wslot_elem_.size()), shadow_slot_xi_.resize(wslot_xi_.size());
   td_.resize(nt_);
   for (auto& t : td_) {
     t.f.assign(n_, ForceAcc{});
@@ -196,34 +200,38 @@ void DemSystem::rebuild_prepare(double time) {
     fill.assign(cell_start_.begin(), cell_start_.end() - 1);
     for (int i = 0; i < n_; ++i) order_[fill[cell_of_[i]]++] = i;
   }
-  // Reorder every per-disc array (the particles of a cell become contiguous).
-  auto permute_d = [&](std::vector<double>& v) {
-    scratch_d_.resize(n_);
-    for (int k = 0; k < n_; ++k) scratch_d_[k] = v[order_[k]];
-    v.swap(scratch_d_);
-  };
-  auto permute_i = [&](std::vector<int>& v) {
-    scratch_i_.resize(n_);
-    for (int k = 0; k < n_; ++k) scratch_i_[k] = v[order_[k]];
-    v.swap(scratch_i_);
-  };
-  for (auto* v : {&x_, &y_, &vx_, &vy_, &w_, &fx_, &fy_, &tq_, &r_, &m_, &invm_, &invI_}) permute_d(*v);
-  for (auto* v : {&ncontact_, &id_}) permute_i(*v);
-  scratch_l_.resize(n_);
-  for (int k = 0; k < n_; ++k) scratch_l_[k] = free_steps_[order_[k]];
-  free_steps_.swap(scratch_l_);
-  {
-    std::vector<int> e(wslot_elem_.size());
-    std::vector<double> xi(wslot_xi_.size());
-    for (int k = 0; k < n_; ++k)
-      for (int s = 0; s < kWallSlots; ++s) {
-        e[static_cast<size_t>(k) * kWallSlots + s] = wslot_elem_[static_cast<size_t>(order_[k]) * kWallSlots + s];
-        xi[static_cast<size_t>(k) * kWallSlots + s] = wslot_xi_[static_cast<size_t>(order_[k]) * kWallSlots + s];
-      }
-    wslot_elem_.swap(e);
-    wslot_xi_.swap(xi);
+}
+
+void DemSystem::rebuild_permute(int t) {
+  // Reorder every per-disc array into its shadow (the particles of a cell
+  // become contiguous); each thread does one slice. The accelerations and
+  // contact counts are rewritten by the next gather before anyone reads them.
+  const int p0 = range_begin(n_, t, nt_), p1 = range_begin(n_, t + 1, nt_);
+  const int* __restrict order = order_.data();
+  std::vector<double>* const dv[] = {&x_, &y_, &vx_, &vy_, &w_, &r_, &m_, &invm_, &invI_};
+  for (int a = 0; a < 9; ++a) {
+    const double* __restrict src = dv[a]->data();
+    double* __restrict dst = shadow_d_[a].data();
+    for (int k = p0; k < p1; ++k) dst[k] = src[order[k]];
   }
-  // cell of each (new) index
+  for (int k = p0; k < p1; ++k) {
+    shadow_id_[k] = id_[order[k]];
+    shadow_free_[k] = free_steps_[order[k]];
+    for (int s = 0; s < kWallSlots; ++s) {
+      shadow_slot_e_[static_cast<size_t>(k) * kWallSlots + s] = wslot_elem_[static_cast<size_t>(order[k]) * kWallSlots + s];
+      shadow_slot_xi_[static_cast<size_t>(k) * kWallSlots + s] = wslot_xi_[static_cast<size_t>(order[k]) * kWallSlots + s];
+    }
+  }
+}
+
+void DemSystem::rebuild_swap() {
+  std::vector<double>* const dv[] = {&x_, &y_, &vx_, &vy_, &w_, &r_, &m_, &invm_, &invI_};
+  for (int a = 0; a < 9; ++a) dv[a]->swap(shadow_d_[a]);
+  id_.swap(shadow_id_);
+  free_steps_.swap(shadow_free_);
+  wslot_elem_.swap(shadow_slot_e_);
+  wslot_xi_.swap(shadow_slot_xi_);
+  const int nc = cnx_ * cny_;
   for (int c = 0; c < nc; ++c)
     for (int k = cell_start_[c]; k < cell_start_[c + 1]; ++k) cell_of_[k] = c;
 }
@@ -287,13 +295,20 @@ void DemSystem::rebuild_finish() {
     std::copy(td_[t].loc_j.begin(), td_[t].loc_j.end(), nb_j_.begin() + off);
     std::copy(td_[t].loc_xi.begin(), td_[t].loc_xi.end(), nb_xi_.begin() + off);
   }
-  // Rows split so every thread gets about the same number of list entries.
+  // Rows split so every thread gets about the same work: a list entry costs one
+  // distance test, a contact (counted at the last step, before the reorder) about
+  // three more; the counts are deterministic, so the split is too.
   row_split_.assign(nt_ + 1, n_);
   row_split_[0] = 0;
-  const double total = nb_start_[n_] + 2.0 * n_;
-  int t = 1;
-  for (int i = 0; i < n_ && t < nt_; ++i)
-    if (nb_start_[i + 1] + 2.0 * (i + 1) >= total * t / nt_) row_split_[t++] = i + 1;
+  if (nt_ > 1) {
+    std::vector<double>& wsum = row_weight_;
+    wsum.assign(n_ + 1, 0.0);
+    for (int i = 0; i < n_; ++i)
+      wsum[i + 1] = wsum[i] + (nb_start_[i + 1] - nb_start_[i]) + 2.0 + 1.5 * ncontact_[order_[i]];
+    int t = 1;
+    for (int i = 0; i < n_ && t < nt_; ++i)
+      if (wsum[i + 1] >= wsum[n_] * t / nt_) row_split_[t++] = i + 1;
+  }
   // Discs that can reach the wall before the next build.
   near_wall_.clear();
   if (walls_.n_elements() > 0) {
@@ -302,8 +317,6 @@ void DemSystem::rebuild_finish() {
     for (int i = 0; i < n_; ++i)
       if (x_[i] * x_[i] + y_[i] * y_[i] >= rc2) near_wall_.push_back(i);
   }
-  wall_split_.resize(nt_ + 1);
-  for (int k = 0; k <= nt_; ++k) wall_split_[k] = range_begin(static_cast<int>(near_wall_.size()), k, nt_);
   xref_ = x_, yref_ = y_;
   rebuild_needed_ = false;
 }
@@ -459,7 +472,10 @@ void DemSystem::wall_forces(int t, bool first, const StepClock& clk) {
   const double* __restrict x = x_.data();
   const double* __restrict y = y_.data();
   const double* __restrict r = r_.data();
-  for (int idx = wall_split_[t]; idx < wall_split_[t + 1]; ++idx) {
+  // Near-wall discs dealt round the threads: they are in spatial order, and the
+  // discs pressed on the lower liner would otherwise all go to one thread.
+  const int nw = static_cast<int>(near_wall_.size());
+  for (int idx = t; idx < nw; idx += nt_) {
     const int i = near_wall_[idx];
     const double px = x[i], py = y[i], ri = r[i];
     const double rr2 = px * px + py * py;
@@ -565,7 +581,7 @@ void DemSystem::wall_forces(int t, bool first, const StepClock& clk) {
       tqs += -ri * ft + mr;  // contact point at -ri n: (-ri n) x (ft t) = -ri ft
       ++ncont;
       if (nslot < kWallSlots) slot_e[nslot] = H.element, slot_xi[nslot] = xi_t, ++nslot;
-      if (H.delta > d.max_ratio * ri) d.max_ratio = H.delta / ri;
+      if (H.delta > d.max_wall_ratio * ri) d.max_wall_ratio = H.delta / ri;
       if (acc) {
         const double aft = std::abs(ft), slip = std::abs(vt);
         const double wgt = H.share >= 0 ? 0.5 * dt : dt;
@@ -646,10 +662,8 @@ void DemSystem::gather(int t, bool kick, bool do_check, bool drift_next) {
     }
     const double ax = a.fx * invm[i] + gx, ay = a.fy * invm[i] + gy, aw = a.tq * invI[i];  // [m/s2], [rad/s2]
     const int nc = static_cast<int>(a.nc);
-    if (!drift_next) {  // kept for the first kick of the next call, and for the caller
-      ax_out[i] = ax, ay_out[i] = ay, aw_out[i] = aw;
-      nc_out[i] = nc;
-    }
+    nc_out[i] = nc;
+    if (!drift_next) ax_out[i] = ax, ay_out[i] = ay, aw_out[i] = aw;  // for the first kick of the next call
     if (kick) {
       // end of this step: v(n+1) = v(n+1/2) + dt/2 a(n+1)
       vx[i] += h * ax, vy[i] += h * ay, w[i] += h * aw;
@@ -738,6 +752,10 @@ void DemSystem::advance(long long steps) {
       if (rebuild) {
         if (t == 0) rebuild_prepare(clk.time);
         barrier.wait();
+        rebuild_permute(t);
+        barrier.wait();
+        if (t == 0) rebuild_swap();
+        barrier.wait();
         rebuild_rows(t);
         barrier.wait();
         if (t == 0) rebuild_finish();
@@ -767,6 +785,7 @@ void DemSystem::advance(long long steps) {
     pair_contact_steps_ += d.pair_contacts, wall_contact_steps_ += d.wall_contacts;
     d.pair_contacts = d.wall_contacts = 0;
     max_overlap_ratio_ = std::max(max_overlap_ratio_, d.max_ratio);
+    max_wall_overlap_ratio_ = std::max(max_wall_overlap_ratio_, d.max_wall_ratio);
     d.steps_done = 0;
   }
   if (!failed_ && td_[0].checked) {

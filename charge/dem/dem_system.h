@@ -140,7 +140,8 @@ class DemSystem {
   long long pair_contact_steps() const { return pair_contact_steps_; }  // sum over steps of particle contacts
   long long wall_contact_steps() const { return wall_contact_steps_; }
   long long list_builds() const { return builds_; }
-  double max_overlap_ratio() const { return max_overlap_ratio_; }  // largest overlap / smaller radius seen
+  double max_overlap_ratio() const { return max_overlap_ratio_; }  // largest disc-disc overlap / smaller radius seen
+  double max_wall_overlap_ratio() const { return max_wall_overlap_ratio_; }  // largest disc-wall overlap / radius
 
  private:
   struct ThreadData;
@@ -152,6 +153,8 @@ class DemSystem {
     bool record = false;  // keep the wall contacts of this step
   };
   void rebuild_prepare(double time);
+  void rebuild_permute(int t);
+  void rebuild_swap();
   void rebuild_rows(int t);
   void rebuild_finish();
   template <bool Hertz>
@@ -180,8 +183,8 @@ class DemSystem {
   std::vector<int> nb_start_, nb_j_, old_start_, old_j_;
   std::vector<double> nb_xi_, old_xi_;
   std::vector<int> row_split_;      // thread t owns rows [row_split_[t], row_split_[t+1])
+  std::vector<double> row_weight_;  // cumulative work estimate of the rows (for row_split_)
   std::vector<int> near_wall_;      // discs that may touch the wall before the next build
-  std::vector<int> wall_split_;
   // cell list
   double cell_ = 0, cx0_ = 0, cy0_ = 0;
   int cnx_ = 0, cny_ = 0;
@@ -189,9 +192,11 @@ class DemSystem {
   std::vector<int> cell_of_;        // cell of each particle at the last build
   std::vector<int> order_;          // at the last build: new index -> index before the build
   std::vector<int> id_;             // the index a particle had in DemParticles
-  std::vector<double> scratch_d_;
   std::vector<int> scratch_i_;
-  std::vector<long long> scratch_l_;
+  std::vector<double> shadow_d_[9];  // reorder targets of x, y, vx, vy, w, r, m, invm, invI
+  std::vector<int> shadow_id_, shadow_slot_e_;
+  std::vector<long long> shadow_free_;
+  std::vector<double> shadow_slot_xi_;
   std::vector<ThreadData> td_;
   std::vector<PackedElement> packed_;  // walls_ elements, one cache line each
   // time
@@ -200,7 +205,7 @@ class DemSystem {
   bool forces_valid_ = false, rebuild_needed_ = true, accumulate_ = false, record_next_ = false;
   double skin_ = 0, rmax_ = 0, rmin_ = 0;
   long long pair_contact_steps_ = 0, wall_contact_steps_ = 0, builds_ = 0;
-  double max_overlap_ratio_ = 0;
+  double max_overlap_ratio_ = 0, max_wall_overlap_ratio_ = 0;
   double accum_duration_ = 0;
   long long accum_start_step_ = 0;
   // failure raised inside the parallel region

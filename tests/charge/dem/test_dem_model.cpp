@@ -169,9 +169,9 @@ TEST_CASE("dem refuses time steps beyond the stable range and coarse-graining th
     Pilot p;
     const DemSetup s = make_dem_setup(p.in);  // the derived step is echoed
     CHECK(s.settings.dt == Approx(s.collision_time_s / p.in.model.dem.steps_per_collision).epsilon(1e-12));
-    p.in.model.dem.time_step_s = s.collision_time_s / 5;
+    p.in.model.dem.time_step_s = s.collision_time_s / 4;
     refused(p.in, "dem.time_step_s", "stable");
-    p.in.model.dem.time_step_s = s.collision_time_s / 9;
+    p.in.model.dem.time_step_s = s.collision_time_s / 6;
     CHECK_NOTHROW(make_dem_setup(p.in));
   }
   {
