@@ -52,6 +52,9 @@ struct alignas(64) DemSystem::ThreadData {
   int worst = -1;     // disc with max_v2
   bool nonfinite = false;
   bool checked = false;  // the last gather checked its range
+  int escaped = -1;      // a disc found outside escape_radius at the last check
+  std::vector<int> wall_part;          // discs this thread checks against the wall until the next build
+  std::vector<int> wc_start, wc_elem;  // their candidate elements (CSR)
   double elastic_pair = 0, elastic_wall = 0;  // [J/m] energy in the contact springs at the last evaluation
   long long steps_done = 0;  // steps completed in this advance()
   int fail = 0;
@@ -236,7 +239,7 @@ void DemSystem::rebuild_swap() {
     for (int k = cell_start_[c]; k < cell_start_[c + 1]; ++k) cell_of_[k] = c;
 }
 
-void DemSystem::rebuild_rows(int t) {
+void DemSystem::rebuild_rows(int t, const StepClock& clk) {
   ThreadData& d = td_[t];
   const int p0 = range_begin(n_, t, nt_), p1 = range_begin(n_, t + 1, nt_);
   d.row_count.assign(p1 - p0, 0);
@@ -279,6 +282,40 @@ void DemSystem::rebuild_rows(int t) {
     }
     d.row_count[i - p0] = static_cast<int>(d.loc_j.size()) - before;
   }
+  // Wall candidates of the discs dealt to this thread (i = t, t + nt, ...: the
+  // discs pressed on the lower liner are spread over the threads): the elements
+  // within radius + skin of the disc in the wall's frame. They stay complete
+  // until the next build: a disc moves less than skin / 2, and the wall turns
+  // less than skin / 2 at its outermost node (advance() rebuilds otherwise).
+  d.wall_part.clear();
+  d.wc_elem.clear();
+  d.wc_start.assign(1, 0);
+  if (walls_.n_elements() > 0) {
+    const WallMesh& W = walls_;
+    const double rc = W.min_radius - rmax_ - skin_;
+    const double rc2 = rc > 0 ? rc * rc : -1;
+    for (int i = t; i < n_; i += nt_) {
+      const double px = x[i], py = y[i];
+      if (px * px + py * py < rc2) continue;
+      const double qx = clk.c * px + clk.s * py, qy = -clk.s * px + clk.c * py;
+      const int c = W.cell_of(qx, qy);
+      if (c < 0) continue;
+      const double lim = r[i] + skin;
+      const size_t before = d.wc_elem.size();
+      for (int k = W.cell_start[c]; k < W.cell_start[c + 1]; ++k) {
+        const int e = W.cell_elems[k];
+        const PackedElement& E = packed_[e];
+        const double dx = qx - E.ax, dy = qy - E.ay;
+        const double tt = std::clamp(dx * E.ux + dy * E.uy, 0.0, E.len);
+        const double ex = dx - tt * E.ux, ey = dy - tt * E.uy;
+        if (ex * ex + ey * ey <= lim * lim) d.wc_elem.push_back(e);
+      }
+      if (d.wc_elem.size() > before) {
+        d.wall_part.push_back(i);
+        d.wc_start.push_back(static_cast<int>(d.wc_elem.size()));
+      }
+    }
+  }
 }
 
 void DemSystem::rebuild_finish() {
@@ -309,16 +346,9 @@ void DemSystem::rebuild_finish() {
     for (int i = 0; i < n_ && t < nt_; ++i)
       if (wsum[i + 1] >= wsum[n_] * t / nt_) row_split_[t++] = i + 1;
   }
-  // Discs that can reach the wall before the next build.
-  near_wall_.clear();
-  if (walls_.n_elements() > 0) {
-    const double rc = walls_.min_radius - rmax_ - skin_;
-    const double rc2 = rc > 0 ? rc * rc : -1;
-    for (int i = 0; i < n_; ++i)
-      if (x_[i] * x_[i] + y_[i] * y_[i] >= rc2) near_wall_.push_back(i);
-  }
   xref_ = x_, yref_ = y_;
   rebuild_needed_ = false;
+  build_angle_ = build_angle_next_;
 }
 
 // ---------------------------------------------------------------- contacts
@@ -462,41 +492,24 @@ void DemSystem::wall_forces(int t, bool first, const StepClock& clk) {
   const double sqrt_kpm = std::sqrt(p.k_per_mass);
   const double dt = set_.dt, mu = p.friction, mu_r = p.rolling_resistance, Om = set_.wall_omega;
   const double ca = clk.c, sa = clk.s;
-  const double esc2 = set_.escape_radius > 0 ? set_.escape_radius * set_.escape_radius : 1e300;
   const bool acc = accumulate_ && !first;
   const bool rec = clk.record;
   double wsum_x = 0, wsum_y = 0, elastic = 0;
   const PackedElement* __restrict pel = packed_.data();
-  const int* __restrict cstart = W.cell_start.data();
-  const int* __restrict celems = W.cell_elems.data();
+  const int* __restrict cstart = d.wc_start.data();
+  const int* __restrict celems = d.wc_elem.data();
   const double* __restrict x = x_.data();
   const double* __restrict y = y_.data();
   const double* __restrict r = r_.data();
-  // Near-wall discs dealt round the threads: they are in spatial order, and the
-  // discs pressed on the lower liner would otherwise all go to one thread.
-  const int nw = static_cast<int>(near_wall_.size());
-  for (int idx = t; idx < nw; idx += nt_) {
-    const int i = near_wall_[idx];
+  const int nw = static_cast<int>(d.wall_part.size());
+  for (int idx = 0; idx < nw; ++idx) {
+    const int i = d.wall_part[idx];
     const double px = x[i], py = y[i], ri = r[i];
-    const double rr2 = px * px + py * py;
-    const double rin = W.min_radius - ri;  // closer to the axis than this, no wall is in reach
-    if (rin > 0 && rr2 < rin * rin) continue;
-    if (rr2 > esc2) {
-      if (!d.fail)
-        fail(fmt::format("disc {} (radius {:.4g} m) left the mill at t = {:.4f} s: its centre is {:.4g} m from "
-                         "the axis, outside the shell ({:.4g} m): the time step ({:.3g} s) is too large for the "
-                         "contact stiffness; raise [dem] steps_per_collision (or lower time_step_s)",
-                         id_[i], ri, clk.time, std::sqrt(px * px + py * py), set_.escape_radius, dt));
-      d.fail = 1;
-      continue;
-    }
     // Body frame: q = R(-angle) p.
     const double qx = ca * px + sa * py, qy = -sa * px + ca * py;
-    const int c = W.cell_of(qx, qy);
-    if (c < 0) continue;
     WallHit hits[8];
     int nh = 0;
-    for (int k = cstart[c], kend = cstart[c + 1]; k < kend; ++k) {
+    for (int k = cstart[idx], kend = cstart[idx + 1]; k < kend; ++k) {
       const int e = celems[k];
       const PackedElement& E = pel[e];
       const double dx = qx - E.ax, dy = qy - E.ay;
@@ -631,8 +644,9 @@ void DemSystem::gather(int t, bool kick, bool do_check, bool drift_next) {
   ThreadData& d = td_[t];
   if (kick) ++d.steps_done;
   double max_v2 = 0, maxd2 = 0;
-  int worst = -1;
+  int worst = -1, escaped = -1;
   bool nonfinite = false;
+  const double esc2 = set_.escape_radius > 0 ? set_.escape_radius * set_.escape_radius : 1e300;
   const double dt = set_.dt, h = 0.5 * dt, gx = set_.gravity_x, gy = set_.gravity_y;
   const int p0 = range_begin(n_, t, nt_), p1 = range_begin(n_, t + 1, nt_);
   double* __restrict x = x_.data();
@@ -672,6 +686,7 @@ void DemSystem::gather(int t, bool kick, bool do_check, bool drift_next) {
         const double v2 = vx[i] * vx[i] + vy[i] * vy[i];
         if (!std::isfinite(v2 + x[i] + y[i] + w[i])) nonfinite = true, worst = i;
         if (v2 > max_v2 && !nonfinite) max_v2 = v2, worst = i;
+        if (x[i] * x[i] + y[i] * y[i] > esc2) escaped = i;
       }
     }
     if (drift_next) {
@@ -682,7 +697,7 @@ void DemSystem::gather(int t, bool kick, bool do_check, bool drift_next) {
       maxd2 = std::max(maxd2, dx * dx + dy * dy);
     }
   }
-  if (do_check) d.max_v2 = max_v2, d.worst = worst, d.nonfinite = nonfinite;
+  if (do_check) d.max_v2 = max_v2, d.worst = worst, d.nonfinite = nonfinite, d.escaped = escaped;
   d.checked = do_check;
   if (kick) d.wimp_x += h * d.wall_fx, d.wimp_y += h * d.wall_fy;
   if (drift_next) {
@@ -695,6 +710,13 @@ std::string DemSystem::check_failure(long long step, double time) const {
   double v2 = 0;
   int worst = -1;
   for (const auto& d : td_) {
+    if (d.escaped >= 0) {
+      const int i = d.escaped;
+      return fmt::format("disc {} (radius {:.4g} m) left the mill at t = {:.4f} s: its centre is {:.4g} m from the "
+                         "axis, outside the shell ({:.4g} m): the time step ({:.3g} s) is too large for the contact "
+                         "stiffness; raise [dem] steps_per_collision (or lower time_step_s)",
+                         id_[i], r_[i], time, std::hypot(x_[i], y_[i]), set_.escape_radius, set_.dt);
+    }
     if (d.nonfinite)
       return fmt::format("disc {} has a non-finite position or velocity at t = {:.4f} s (step {}): the run blew up; "
                          "reduce the time step (more [dem] steps_per_collision)",
@@ -716,6 +738,7 @@ void DemSystem::advance(long long steps) {
   for (auto& d : td_) d.fail = 0, d.checked = false;
   const bool hertz = set_.particle.law == ContactLaw::Hertz;
   const double half_skin2 = 0.25 * skin_ * skin_;
+  const double max_turn = walls_.max_radius > 0 ? 0.5 * skin_ / walls_.max_radius : 1e300;  // [rad]
   const int check_every = std::max(1, set_.check_interval);
   const long long step0 = step_;
   const bool record = record_next_;
@@ -735,7 +758,8 @@ void DemSystem::advance(long long steps) {
       // checks of the last gather, then the clock and the list decision (same on every thread)
       if (!first && td_[0].checked) {
         bool bad = false;
-        for (const auto& d : td_) bad |= d.nonfinite || (set_.speed_limit > 0 && d.max_v2 > set_.speed_limit * set_.speed_limit);
+        for (const auto& d : td_)
+          bad |= d.nonfinite || d.escaped >= 0 || (set_.speed_limit > 0 && d.max_v2 > set_.speed_limit * set_.speed_limit);
         if (bad) {
           if (t == 0) failed_ = 1;
           break;
@@ -747,16 +771,16 @@ void DemSystem::advance(long long steps) {
       const double angle = set_.wall_angle0 + set_.wall_omega * clk.time;
       clk.c = std::cos(angle), clk.s = std::sin(angle);
       clk.record = record && s == 0;
-      bool rebuild = rebuild_needed_;
+      bool rebuild = rebuild_needed_ || std::abs(angle - build_angle_) > max_turn;
       for (const auto& d : td_) rebuild |= d.maxd2 > half_skin2;
       if (rebuild) {
-        if (t == 0) rebuild_prepare(clk.time);
+        if (t == 0) rebuild_prepare(clk.time), build_angle_next_ = angle;
         barrier.wait();
         rebuild_permute(t);
         barrier.wait();
         if (t == 0) rebuild_swap();
         barrier.wait();
-        rebuild_rows(t);
+        rebuild_rows(t, clk);
         barrier.wait();
         if (t == 0) rebuild_finish();
         barrier.wait();

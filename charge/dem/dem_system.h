@@ -155,7 +155,7 @@ class DemSystem {
   void rebuild_prepare(double time);
   void rebuild_permute(int t);
   void rebuild_swap();
-  void rebuild_rows(int t);
+  void rebuild_rows(int t, const StepClock& clk);
   void rebuild_finish();
   template <bool Hertz>
   void pair_forces(int t);
@@ -184,7 +184,7 @@ class DemSystem {
   std::vector<double> nb_xi_, old_xi_;
   std::vector<int> row_split_;      // thread t owns rows [row_split_[t], row_split_[t+1])
   std::vector<double> row_weight_;  // cumulative work estimate of the rows (for row_split_)
-  std::vector<int> near_wall_;      // discs that may touch the wall before the next build
+  double build_angle_ = 0, build_angle_next_ = 0;  // [rad] wall angle at the last list build
   // cell list
   double cell_ = 0, cx0_ = 0, cy0_ = 0;
   int cnx_ = 0, cny_ = 0;
