@@ -192,9 +192,12 @@ DemSetup make_dem_setup(const ChargeInput& in) {
 }
 
 ChargeResult run_dem(const ChargeInput& in, DemRunInfo* info_out) {
+  return run_dem(in, make_dem_setup(in), info_out);
+}
+
+ChargeResult run_dem(const ChargeInput& in, DemSetup setup, DemRunInfo* info_out) {
   const auto t_start = std::chrono::steady_clock::now();
   const DemSpec& spec = in.model.dem;
-  DemSetup setup = make_dem_setup(in);
   const ParticleSet& ps = setup.particles;
   const LinerSurface& surface = *in.surface;
   const double dt = setup.settings.dt;

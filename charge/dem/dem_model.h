@@ -68,6 +68,11 @@ DemSetup make_dem_setup(const ChargeInput& in);
 /// Runs the model; info (optional) receives the run's figures.
 ChargeResult run_dem(const ChargeInput& in, DemRunInfo* info = nullptr);
 
+/// Runs the model on a setup from make_dem_setup() that the caller may have
+/// changed (studies beyond the accepted range: bench/dem_bench.cpp). Nothing
+/// the caller changed is checked again.
+ChargeResult run_dem(const ChargeInput& in, DemSetup setup, DemRunInfo* info);
+
 /// The table entry's factory (charge_models.cpp).
 std::unique_ptr<ChargeModel> make_dem_model();
 

@@ -1,11 +1,10 @@
 #include "charge/dem/dem_system.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-
-#include <atomic>
 #include <thread>
 
 #include <fmt/format.h>
@@ -15,7 +14,6 @@
 
 namespace linerlife {
 
-// Everything one thread writes during a step, padded against false sharing.
 /// Contact force, torque and contact count on one disc from one thread (one
 /// cache line half: the pair loop touches a partner once).
 struct ForceAcc {
@@ -33,6 +31,7 @@ struct alignas(64) DemSystem::PackedElement {
   int convex_start, convex_end;
 };
 
+/// Everything one thread writes during a step, padded against false sharing.
 struct alignas(64) DemSystem::ThreadData {
   std::vector<ForceAcc> f;         // contact forces on every disc from this thread's contacts
   std::vector<int> row_count;      // list rebuild: partners of each row in this thread's particle range
@@ -57,8 +56,7 @@ struct alignas(64) DemSystem::ThreadData {
   std::vector<int> wc_start, wc_elem;  // their candidate elements (CSR)
   double elastic_pair = 0, elastic_wall = 0;  // [J/m] energy in the contact springs at the last evaluation
   long long steps_done = 0;  // steps completed in this advance()
-  int fail = 0;
-  std::string msg;
+  int fail = 0;  // this thread has reported a failure
 };
 
 namespace {
@@ -111,8 +109,9 @@ DemSystem::DemSystem(const DemSettings& settings, WallMesh walls, const DemParti
   if (n_ == 0) rmax_ = rmin_ = 1;
   double rmean = 0;
   for (int i = 0; i < n_; ++i) rmean += r_[i] / n_;
-  // 3/4 of the mean radius: the list is rebuilt every 10-20 steps in a mill and
-  // holds about twice the contacts (docs/benchmarks.md, ## DEM, skin study)
+  // 3/4 of the mean radius: a larger skin means fewer list builds but more
+  // list entries to test every step; in the mills of data/mills the list is
+  // rebuilt every 5 to 15 steps with it
   skin_ = set_.skin > 0 ? set_.skin : 0.75 * (n_ > 0 ? rmean : 1.0);
   fx_.assign(n_, 0), fy_.assign(n_, 0), tq_.assign(n_, 0);
   xref_ = x_, yref_ = y_;
@@ -130,7 +129,7 @@ DemSystem::DemSystem(const DemSettings& settings, WallMesh walls, const DemParti
   for (auto& t : td_) {
     t.f.assign(n_, ForceAcc{});
   }
-  if (walls_.n_elements() > 0 && walls_.cell_start.empty())
+  if (walls_.n_elements() > 0 && (walls_.cell_start.empty() || walls_.reach < rmax_ + skin_))
     build_wall_grid(walls_, rmax_ + skin_, std::max(0.5 * (rmax_ + skin_), 1e-3 * (walls_.max_radius + rmax_)));
   packed_.resize(walls_.n_elements());
   for (int e = 0; e < walls_.n_elements(); ++e)
