@@ -63,31 +63,6 @@ namespace {
 
 inline int range_begin(int n, int t, int nt) { return static_cast<int>(static_cast<long long>(n) * t / nt); }
 
-/// A sense-reversing barrier that spins briefly and then yields the core. The
-/// OpenMP barrier spins much longer before it sleeps; on a machine shared with
-/// other jobs a spinning thread keeps the core from the thread everyone waits
-/// for, and a step can then take milliseconds instead of microseconds.
-class YieldingBarrier {
- public:
-  explicit YieldingBarrier(int n) : n_(n) {}
-  void wait() {
-    if (n_ == 1) return;
-    const int gen = generation_.load(std::memory_order_acquire);
-    if (count_.fetch_add(1, std::memory_order_acq_rel) == n_ - 1) {
-      count_.store(0, std::memory_order_relaxed);
-      generation_.fetch_add(1, std::memory_order_release);
-      return;
-    }
-    for (int spins = 0; generation_.load(std::memory_order_acquire) == gen; ++spins)
-      if (spins > 2000) std::this_thread::yield();
-  }
-
- private:
-  const int n_;
-  std::atomic<int> count_{0};
-  std::atomic<int> generation_{0};
-};
-
 }  // namespace
 
 DemSystem::DemSystem(const DemSettings& settings, WallMesh walls, const DemParticles& p)
@@ -731,6 +706,59 @@ std::string DemSystem::check_failure(long long step, double time) const {
   return {};
 }
 
+namespace {
+
+/// Work published by the control thread in numbered phases of `items` items
+/// and claimed by whichever threads are running. Item k of a phase always does
+/// the same work into the same buffers, whoever runs it, so the results do not
+/// depend on the schedule; a thread the system has descheduled never holds up
+/// the others (they take its items), which a barrier would.
+class PhaseQueue {
+ public:
+  /// Control thread: opens the next phase.
+  unsigned publish(int kind, int items) {
+    const unsigned s = ++seq_;
+    kind_[s & 1].store(kind, std::memory_order_relaxed);
+    items_[s & 1].store(items, std::memory_order_relaxed);
+    done_[s & 1].store(0, std::memory_order_relaxed);
+    claim_.store(static_cast<unsigned long long>(s) << 32, std::memory_order_release);
+    return s;
+  }
+  /// Claims an item of the current phase; false when all are taken.
+  bool claim(unsigned& s, int& kind, int& item) {
+    unsigned long long c = claim_.load(std::memory_order_acquire);
+    for (;;) {
+      s = static_cast<unsigned>(c >> 32);
+      const int n = static_cast<int>(c & 0xffffffffULL);
+      // items_[s & 1] stays put while phase s has unclaimed items; if the phase
+      // moved on meanwhile, the exchange below fails and the value is not used
+      if (s == 0 || n >= items_[s & 1].load(std::memory_order_acquire)) return false;
+      if (claim_.compare_exchange_weak(c, c + 1, std::memory_order_acq_rel, std::memory_order_acquire)) {
+        kind = kind_[s & 1].load(std::memory_order_relaxed);
+        item = n;
+        return true;
+      }
+    }
+  }
+  void complete(unsigned s) { done_[s & 1].fetch_add(1, std::memory_order_acq_rel); }
+  bool finished(unsigned s, int items) const { return done_[s & 1].load(std::memory_order_acquire) == items; }
+  std::atomic<bool> stop{false};
+
+ private:
+  std::atomic<unsigned long long> claim_{0};
+  std::atomic<int> kind_[2] = {}, items_[2] = {}, done_[2] = {};
+  unsigned seq_ = 0;
+};
+
+/// Waits briefly by spinning, then by giving the core away.
+inline void relax(int& spins) {
+  if (++spins > 2000) std::this_thread::yield();
+}
+
+enum PhaseKind { kKickDrift, kPermute, kRows, kForces, kGather };
+
+}  // namespace
+
 void DemSystem::advance(long long steps) {
   failed_ = 0;
   failure_.clear();
@@ -742,59 +770,98 @@ void DemSystem::advance(long long steps) {
   const long long step0 = step_;
   const bool record = record_next_;
   record_next_ = false;
-  // Two barriers a step (after the drift, after the forces); every thread takes
-  // the same decisions from the same shared data, so only the list rebuild has
-  // work for one thread alone.
-  YieldingBarrier barrier(nt_);
+
+  // The step's parameters, written by the control thread before it opens a
+  // phase and read by the items of that phase.
+  struct Args {
+    StepClock clk;
+    bool first = false, do_check = false, drift_next = false;
+  } args;
+  PhaseQueue queue;
+  auto execute = [&](int kind, int k) {
+    switch (kind) {
+      case kKickDrift: kick_drift(k); break;
+      case kPermute: rebuild_permute(k); break;
+      case kRows: rebuild_rows(k, args.clk); break;
+      case kForces:
+        if (hertz) {
+          pair_forces<true>(k);
+          wall_forces<true>(k, args.first, args.clk);
+        } else {
+          pair_forces<false>(k);
+          wall_forces<false>(k, args.first, args.clk);
+        }
+        break;
+      case kGather: gather(k, !args.first, args.do_check, args.drift_next); break;
+    }
+  };
+  // Control thread: open a phase of nt_ items (the partitions), work on it, wait for the rest.
+  auto run = [&](int kind) {
+    const unsigned s = queue.publish(kind, nt_);
+    unsigned cs;
+    int ck, item;
+    while (queue.claim(cs, ck, item)) {
+      execute(ck, item);
+      queue.complete(cs);
+    }
+    for (int spins = 0; !queue.finished(s, nt_);) relax(spins);
+  };
+
 #pragma omp parallel num_threads(nt_)
   {
-    const int t = omp_get_thread_num();
-    const long long s_begin = forces_valid_ ? 0 : -1;
-    for (long long s = s_begin; s < steps; ++s) {
-      const bool first = s < 0;
-      if (s == 0 && s_begin == 0) kick_drift(t);  // later steps were started by the last gather
-      barrier.wait();
-      // checks of the last gather, then the clock and the list decision (same on every thread)
-      if (!first && td_[0].checked) {
-        bool bad = false;
-        for (const auto& d : td_)
-          bad |= d.nonfinite || d.escaped >= 0 || (set_.speed_limit > 0 && d.max_v2 > set_.speed_limit * set_.speed_limit);
-        if (bad) {
-          if (t == 0) failed_ = 1;
-          break;
+    if (omp_get_thread_num() != 0) {
+      // helper: take items until the control thread stops
+      unsigned cs;
+      int ck, item;
+      for (int spins = 0; !queue.stop.load(std::memory_order_acquire);) {
+        if (queue.claim(cs, ck, item)) {
+          execute(ck, item);
+          queue.complete(cs);
+          spins = 0;
+        } else {
+          relax(spins);
         }
       }
-      StepClock clk;
-      clk.step = step0 + (first ? 0 : s + 1);
-      clk.time = clk.step * set_.dt;
-      const double angle = set_.wall_angle0 + set_.wall_omega * clk.time;
-      clk.c = std::cos(angle), clk.s = std::sin(angle);
-      clk.record = record && s == 0;
-      bool rebuild = rebuild_needed_ || std::abs(angle - build_angle_) > max_turn;
-      for (const auto& d : td_) rebuild |= d.maxd2 > half_skin2;
-      if (rebuild) {
-        if (t == 0) rebuild_prepare(clk.time), build_angle_next_ = angle;
-        barrier.wait();
-        rebuild_permute(t);
-        barrier.wait();
-        if (t == 0) rebuild_swap();
-        barrier.wait();
-        rebuild_rows(t, clk);
-        barrier.wait();
-        if (t == 0) rebuild_finish();
-        barrier.wait();
+    } else {
+      const long long s_begin = forces_valid_ ? 0 : -1;
+      for (long long s = s_begin; s < steps; ++s) {
+        const bool first = s < 0;
+        if (s == 0 && s_begin == 0) run(kKickDrift);  // later steps were started by the last gather
+        // checks of the last gather
+        if (!first && td_[0].checked) {
+          bool bad = false;
+          for (const auto& d : td_)
+            bad |= d.nonfinite || d.escaped >= 0 ||
+                   (set_.speed_limit > 0 && d.max_v2 > set_.speed_limit * set_.speed_limit);
+          if (bad) {
+            failed_ = 1;
+            break;
+          }
+        }
+        StepClock& clk = args.clk;
+        clk.step = step0 + (first ? 0 : s + 1);
+        clk.time = clk.step * set_.dt;
+        const double angle = set_.wall_angle0 + set_.wall_omega * clk.time;
+        clk.c = std::cos(angle), clk.s = std::sin(angle);
+        clk.record = record && s == 0;
+        args.first = first;
+        bool rebuild = rebuild_needed_ || std::abs(angle - build_angle_) > max_turn;
+        for (const auto& d : td_) rebuild |= d.maxd2 > half_skin2;
+        if (rebuild) {
+          rebuild_prepare(clk.time);
+          build_angle_next_ = angle;
+          run(kPermute);
+          rebuild_swap();
+          run(kRows);
+          rebuild_finish();
+        }
+        run(kForces);
+        if (failed_) break;
+        args.do_check = !first && (clk.step % check_every == 0 || s == steps - 1);
+        args.drift_next = s + 1 < steps;
+        run(kGather);
       }
-      if (hertz) {
-        pair_forces<true>(t);
-        wall_forces<true>(t, first, clk);
-      } else {
-        pair_forces<false>(t);
-        wall_forces<false>(t, first, clk);
-      }
-      barrier.wait();
-      if (failed_) break;
-      const bool do_check = !first && (clk.step % check_every == 0 || s == steps - 1);
-      gather(t, !first, do_check, s + 1 < steps);
+      queue.stop.store(true, std::memory_order_release);
     }
   }
   // the clock of the last completed step

@@ -11,11 +11,13 @@
 // Neighbours: a Verlet list (pairs i < j closer than r_i + r_j + skin) built
 // from a cell list and rebuilt when a particle has moved more than skin / 2
 // since the last build; the tangential spring of each pair moves to the new
-// list. Walls: each disc near the wall looks up the wall's candidate grid in
-// the wall's body frame. Threads: contiguous particle ranges for the kicks, a
-// pair-count balanced split of the list rows for the contacts, each thread
-// adding into its own force buffer; buffers are summed in thread order, so a
-// run repeats bit for bit for a given thread count.
+// list. Walls: each disc near the wall is tested against its candidate
+// elements, listed with the neighbour list in the wall's body frame. Threads:
+// the work of each phase is cut into `threads` fixed partitions (particle
+// ranges for the kicks, a work-balanced split of the list rows for the
+// contacts), partition k adding into its own force buffer k; the buffers are
+// summed in partition order, so a run repeats bit for bit for a given thread
+// count, whichever thread ran which partition (docs/models/dem.md §6).
 //
 // Units SI; 2D discs are cylinders of unit length: masses [kg/m], forces [N/m],
 // torques [N m/m], moments of inertia [kg m2/m].
