@@ -77,9 +77,10 @@ int scaling(int n_target, int threads, int reps, long long steps, const char* co
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const long long contacts = sys.pair_contact_steps() + sys.wall_contact_steps() - c0;
     std::printf("scaling particles %d threads %d steps %lld wall_s %.4f particle_steps_per_s %.4g contacts_per_s %.4g "
-                "dt %.4g\n",
+                "dt %.4g list_entries_per_disc %.2g contacts_per_disc %.2g builds %lld\n",
                 sys.size(), threads, steps, wall, sys.size() * static_cast<double>(steps) / wall, contacts / wall,
-                set.dt);
+                set.dt, sys.list_entries_per_disc(), static_cast<double>(contacts) / steps / sys.size(),
+                sys.list_builds());
     std::fflush(stdout);
   }
   return 0;

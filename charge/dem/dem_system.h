@@ -142,6 +142,7 @@ class DemSystem {
   long long pair_contact_steps() const { return pair_contact_steps_; }  // sum over steps of particle contacts
   long long wall_contact_steps() const { return wall_contact_steps_; }
   long long list_builds() const { return builds_; }
+  double list_entries_per_disc() const { return n_ ? static_cast<double>(nb_j_.size()) / n_ : 0.0; }  // at the last build
   double max_overlap_ratio() const { return max_overlap_ratio_; }  // largest disc-disc overlap / smaller radius seen
   double max_wall_overlap_ratio() const { return max_wall_overlap_ratio_; }  // largest disc-wall overlap / radius
 
