@@ -37,7 +37,7 @@ struct alignas(64) DemSystem::ThreadData {
   std::vector<int> row_count;      // list rebuild: partners of each row in this thread's particle range
   std::vector<int> loc_j;
   std::vector<double> loc_xi;
-  double maxd2 = 0;                // [m2] largest squared displacement since the last build
+  double maxd2 = 0, maxd2b = 0;    // [m2] the two largest squared displacements since the last build
   std::vector<double> ld_n, ld_s, ld_ns, ld_ss;  // per element load sums
   double drive_work = 0;           // [J/m]
   double wall_fx = 0, wall_fy = 0;  // [N/m] sum of the wall forces this thread computed at the last evaluation
@@ -259,8 +259,8 @@ void DemSystem::rebuild_rows(int t, const StepClock& clk) {
   // Wall candidates of the discs dealt to this thread (i = t, t + nt, ...: the
   // discs pressed on the lower liner are spread over the threads): the elements
   // within radius + skin of the disc in the wall's frame. They stay complete
-  // until the next build: a disc moves less than skin / 2, and the wall turns
-  // less than skin / 2 at its outermost node (advance() rebuilds otherwise).
+  // until the next build: advance() rebuilds before a disc's displacement and
+  // the wall's turn at its outermost node add up to the skin.
   d.wall_part.clear();
   d.wc_elem.clear();
   d.wc_start.assign(1, 0);
@@ -600,7 +600,7 @@ void DemSystem::kick_drift(int t) {
   ThreadData& d = td_[t];
   const double dt = set_.dt, h = 0.5 * dt;
   const int p0 = range_begin(n_, t, nt_), p1 = range_begin(n_, t + 1, nt_);
-  double maxd2 = 0;
+  double maxd2 = 0, maxd2b = 0;
   for (int i = p0; i < p1; ++i) {
     vx_[i] += h * fx_[i];  // fx_, fy_, tq_ hold the accelerations of the last gather
     vy_[i] += h * fy_[i];
@@ -608,16 +608,20 @@ void DemSystem::kick_drift(int t) {
     x_[i] += dt * vx_[i];
     y_[i] += dt * vy_[i];
     const double dx = x_[i] - xref_[i], dy = y_[i] - yref_[i];
-    maxd2 = std::max(maxd2, dx * dx + dy * dy);
+    const double d2 = dx * dx + dy * dy;
+    if (d2 > maxd2b) {
+      if (d2 > maxd2) maxd2b = maxd2, maxd2 = d2;
+      else maxd2b = d2;
+    }
   }
-  d.maxd2 = maxd2;
+  d.maxd2 = maxd2, d.maxd2b = maxd2b;
   d.wimp_x += h * d.wall_fx, d.wimp_y += h * d.wall_fy;
 }
 
 void DemSystem::gather(int t, bool kick, bool do_check, bool drift_next) {
   ThreadData& d = td_[t];
   if (kick) ++d.steps_done;
-  double max_v2 = 0, maxd2 = 0;
+  double max_v2 = 0, maxd2 = 0, maxd2b = 0;
   int worst = -1, escaped = -1;
   bool nonfinite = false;
   const double esc2 = set_.escape_radius > 0 ? set_.escape_radius * set_.escape_radius : 1e300;
@@ -668,14 +672,18 @@ void DemSystem::gather(int t, bool kick, bool do_check, bool drift_next) {
       vx[i] += h * ax, vy[i] += h * ay, w[i] += h * aw;
       x[i] += dt * vx[i], y[i] += dt * vy[i];
       const double dx = x[i] - xref[i], dy = y[i] - yref[i];
-      maxd2 = std::max(maxd2, dx * dx + dy * dy);
+      const double d2 = dx * dx + dy * dy;
+      if (d2 > maxd2b) {  // the two largest
+        if (d2 > maxd2) maxd2b = maxd2, maxd2 = d2;
+        else maxd2b = d2;
+      }
     }
   }
   if (do_check) d.max_v2 = max_v2, d.worst = worst, d.nonfinite = nonfinite, d.escaped = escaped;
   d.checked = do_check;
   if (kick) d.wimp_x += h * d.wall_fx, d.wimp_y += h * d.wall_fy;
   if (drift_next) {
-    d.maxd2 = maxd2;
+    d.maxd2 = maxd2, d.maxd2b = maxd2b;
     d.wimp_x += h * d.wall_fx, d.wimp_y += h * d.wall_fy;
   }
 }
@@ -764,8 +772,7 @@ void DemSystem::advance(long long steps) {
   failure_.clear();
   for (auto& d : td_) d.fail = 0, d.checked = false;
   const bool hertz = set_.particle.law == ContactLaw::Hertz;
-  const double half_skin2 = 0.25 * skin_ * skin_;
-  const double max_turn = walls_.max_radius > 0 ? 0.5 * skin_ / walls_.max_radius : 1e300;  // [rad]
+  const double turn_radius = walls_.n_elements() > 0 ? walls_.max_radius : 0.0;  // [m]
   const int check_every = std::max(1, set_.check_interval);
   const long long step0 = step_;
   const bool record = record_next_;
@@ -845,8 +852,19 @@ void DemSystem::advance(long long steps) {
         clk.c = std::cos(angle), clk.s = std::sin(angle);
         clk.record = record && s == 0;
         args.first = first;
-        bool rebuild = rebuild_needed_ || std::abs(angle - build_angle_) > max_turn;
-        for (const auto& d : td_) rebuild |= d.maxd2 > half_skin2;
+        // A pair can close the skin only if its two discs moved skin in all; a disc
+        // can reach a liner element it was not listed with only if its own
+        // displacement and the liner's turn at its outermost node add up to skin.
+        double m1 = 0, m2 = 0;  // the two largest displacements [m]
+        for (const auto& d : td_) {
+          for (double v : {d.maxd2, d.maxd2b}) {
+            if (v > m2 * m2) {
+              if (v > m1 * m1) m2 = m1, m1 = std::sqrt(v);
+              else m2 = std::sqrt(v);
+            }
+          }
+        }
+        const bool rebuild = rebuild_needed_ || m1 + m2 > skin_ || m1 + std::abs(angle - build_angle_) * turn_radius > skin_;
         if (rebuild) {
           rebuild_prepare(clk.time);
           build_angle_next_ = angle;

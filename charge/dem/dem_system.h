@@ -9,8 +9,9 @@
 // and the same for the rotation with the torque and I = m r^2 / 2.
 //
 // Neighbours: a Verlet list (pairs i < j closer than r_i + r_j + skin) built
-// from a cell list and rebuilt when a particle has moved more than skin / 2
-// since the last build; the tangential spring of each pair moves to the new
+// from a cell list and rebuilt when the two largest displacements since the
+// last build add up to the skin (or the largest and the wall's turn at its
+// outermost node do); the tangential spring of each pair moves to the new
 // list. Walls: each disc near the wall is tested against its candidate
 // elements, listed with the neighbour list in the wall's body frame. Threads:
 // the work of each phase is cut into `threads` fixed partitions (particle
