@@ -36,8 +36,8 @@ struct DemSpec {
   double revolutions = 3;              // [-] mill revolutions averaged (when ChargeInput::revolutions is 0)
   double settle_revolutions = 1.5;     // [-] revolutions run before averaging starts
   double impact_min_speed_m_s = 0.1;   // [m/s] contact onsets slower than this (normal) are not impacts
-  long long seed = 1;                  // random placement and sizes; runs repeat exactly for a seed and thread count
-  int threads = 0;                     // OpenMP threads; 0: all available
+  long long seed = 1;                  // random placement and sizes; runs repeat exactly for a seed
+  int threads = 0;                     // OpenMP threads; 0: all available (the results do not depend on it)
 };
 
 }  // namespace linerlife

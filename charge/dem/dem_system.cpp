@@ -14,9 +14,9 @@
 
 namespace linerlife {
 
-/// Contact force, torque and contact count on one disc from one thread (one
-/// cache line half: the pair loop touches a partner once).
-struct ForceAcc {
+/// Contact force, torque and contact count on one disc from one partition
+/// (half a cache line: the pair loop touches a partner once).
+struct DemSystem::ForceAcc {
   double fx = 0, fy = 0;  // [N/m]
   double tq = 0;          // [N m/m]
   double nc = 0;          // contacts
@@ -31,7 +31,7 @@ struct alignas(64) DemSystem::PackedElement {
   int convex_start, convex_end;
 };
 
-/// Everything one thread writes during a step, padded against false sharing.
+/// Everything one partition writes during a step, padded against false sharing.
 struct alignas(64) DemSystem::ThreadData {
   std::vector<ForceAcc> f;         // contact forces on every disc from this thread's contacts
   std::vector<int> row_count;      // list rebuild: partners of each row in this thread's particle range
@@ -72,6 +72,7 @@ DemSystem::DemSystem(const DemSettings& settings, WallMesh walls, const DemParti
     if (static_cast<int>(v->size()) != n_) throw std::invalid_argument("DemParticles: vectors of different sizes");
   if (!(set_.dt > 0)) throw std::invalid_argument("DemSettings: dt must be > 0");
   nt_ = std::max(1, set_.threads);
+  np_ = kPartitions;
   x_ = p.x, y_ = p.y, vx_ = p.vx, vy_ = p.vy, w_ = p.w, r_ = p.radius, m_ = p.mass;
   invm_.resize(n_), invI_.resize(n_);
   rmax_ = 0, rmin_ = std::numeric_limits<double>::max();
@@ -100,7 +101,9 @@ DemSystem::DemSystem(const DemSettings& settings, WallMesh walls, const DemParti
   for (auto& v : shadow_d_) v.resize(n_);
   shadow_id_.resize(n_), shadow_free_.resize(n_);
   shadow_slot_e_.resize(wslot_elem_.size()), shadow_slot_xi_.resize(wslot_xi_.size());
-  td_.resize(nt_);
+  td_.resize(np_);
+  wacc_.assign(n_, ForceAcc{});
+  part_lo_.assign(np_, 0), part_hi_.assign(np_, -1);
   for (auto& t : td_) {
     t.f.assign(n_, ForceAcc{});
   }
@@ -183,7 +186,7 @@ void DemSystem::rebuild_permute(int t) {
   // Reorder every per-disc array into its shadow (the particles of a cell
   // become contiguous); each thread does one slice. The accelerations and
   // contact counts are rewritten by the next gather before anyone reads them.
-  const int p0 = range_begin(n_, t, nt_), p1 = range_begin(n_, t + 1, nt_);
+  const int p0 = range_begin(n_, t, np_), p1 = range_begin(n_, t + 1, np_);
   const int* __restrict order = order_.data();
   std::vector<double>* const dv[] = {&x_, &y_, &vx_, &vy_, &w_, &r_, &m_, &invm_, &invI_};
   for (int a = 0; a < 9; ++a) {
@@ -215,7 +218,7 @@ void DemSystem::rebuild_swap() {
 
 void DemSystem::rebuild_rows(int t, const StepClock& clk) {
   ThreadData& d = td_[t];
-  const int p0 = range_begin(n_, t, nt_), p1 = range_begin(n_, t + 1, nt_);
+  const int p0 = range_begin(n_, t, np_), p1 = range_begin(n_, t + 1, np_);
   d.row_count.assign(p1 - p0, 0);
   d.loc_j.clear();
   d.loc_xi.clear();
@@ -268,7 +271,7 @@ void DemSystem::rebuild_rows(int t, const StepClock& clk) {
     const WallMesh& W = walls_;
     const double rc = W.min_radius - rmax_ - skin_;
     const double rc2 = rc > 0 ? rc * rc : -1;
-    for (int i = t; i < n_; i += nt_) {
+    for (int i = t; i < n_; i += np_) {
       const double px = x[i], py = y[i];
       if (px * px + py * py < rc2) continue;
       const double qx = clk.c * px + clk.s * py, qy = -clk.s * px + clk.c * py;
@@ -294,31 +297,38 @@ void DemSystem::rebuild_rows(int t, const StepClock& clk) {
 
 void DemSystem::rebuild_finish() {
   nb_start_.assign(n_ + 1, 0);
-  for (int t = 0; t < nt_; ++t) {
-    const int p0 = range_begin(n_, t, nt_);
+  for (int t = 0; t < np_; ++t) {
+    const int p0 = range_begin(n_, t, np_);
     for (size_t k = 0; k < td_[t].row_count.size(); ++k) nb_start_[p0 + k + 1] = td_[t].row_count[k];
   }
   for (int i = 0; i < n_; ++i) nb_start_[i + 1] += nb_start_[i];
   nb_j_.resize(nb_start_[n_]);
   nb_xi_.resize(nb_start_[n_]);
-  for (int t = 0; t < nt_; ++t) {
-    const int off = nb_start_[range_begin(n_, t, nt_)];
+  for (int t = 0; t < np_; ++t) {
+    const int off = nb_start_[range_begin(n_, t, np_)];
     std::copy(td_[t].loc_j.begin(), td_[t].loc_j.end(), nb_j_.begin() + off);
     std::copy(td_[t].loc_xi.begin(), td_[t].loc_xi.end(), nb_xi_.begin() + off);
   }
   // Rows split so every thread gets about the same work: a list entry costs one
   // distance test, a contact (counted at the last step, before the reorder) about
   // three more; the counts are deterministic, so the split is too.
-  row_split_.assign(nt_ + 1, n_);
+  row_split_.assign(np_ + 1, n_);
   row_split_[0] = 0;
-  if (nt_ > 1) {
+  if (np_ > 1) {
     std::vector<double>& wsum = row_weight_;
     wsum.assign(n_ + 1, 0.0);
     for (int i = 0; i < n_; ++i)
       wsum[i + 1] = wsum[i] + (nb_start_[i + 1] - nb_start_[i]) + 2.0 + 1.5 * ncontact_[order_[i]];
     int t = 1;
-    for (int i = 0; i < n_ && t < nt_; ++i)
-      if (wsum[i + 1] >= wsum[n_] * t / nt_) row_split_[t++] = i + 1;
+    for (int i = 0; i < n_ && t < np_; ++i)
+      if (wsum[i + 1] >= wsum[n_] * t / np_) row_split_[t++] = i + 1;
+  }
+  // The discs each partition's contacts can write to: its rows and their partners.
+  for (int k = 0; k < np_; ++k) {
+    part_lo_[k] = row_split_[k];
+    int hi = row_split_[k + 1] - 1;
+    for (int e = nb_start_[row_split_[k]]; e < nb_start_[row_split_[k + 1]]; ++e) hi = std::max(hi, nb_j_[e]);
+    part_hi_[k] = hi;
   }
   xref_ = x_, yref_ = y_;
   rebuild_needed_ = false;
@@ -585,8 +595,7 @@ void DemSystem::wall_forces(int t, bool first, const StepClock& clk) {
       }
       if (rec) d.records.push_back({id_[i], H.element, -Fx, -Fy, cx, cy});
     }
-    ForceAcc& ai = d.f[i];
-    ai.fx += fxs, ai.fy += fys, ai.tq += tqs, ai.nc += ncont;
+    wacc_[i] = {fxs, fys, tqs, static_cast<double>(ncont)};  // this disc's liner contacts, one partition writes it
     wsum_x += fxs, wsum_y += fys;
     d.wall_contacts += ncont;
   }
@@ -599,7 +608,7 @@ void DemSystem::wall_forces(int t, bool first, const StepClock& clk) {
 void DemSystem::kick_drift(int t) {
   ThreadData& d = td_[t];
   const double dt = set_.dt, h = 0.5 * dt;
-  const int p0 = range_begin(n_, t, nt_), p1 = range_begin(n_, t + 1, nt_);
+  const int p0 = range_begin(n_, t, np_), p1 = range_begin(n_, t + 1, np_);
   double maxd2 = 0, maxd2b = 0;
   for (int i = p0; i < p1; ++i) {
     vx_[i] += h * fx_[i];  // fx_, fy_, tq_ hold the accelerations of the last gather
@@ -626,7 +635,7 @@ void DemSystem::gather(int t, bool kick, bool do_check, bool drift_next) {
   bool nonfinite = false;
   const double esc2 = set_.escape_radius > 0 ? set_.escape_radius * set_.escape_radius : 1e300;
   const double dt = set_.dt, h = 0.5 * dt, gx = set_.gravity_x, gy = set_.gravity_y;
-  const int p0 = range_begin(n_, t, nt_), p1 = range_begin(n_, t + 1, nt_);
+  const int p0 = range_begin(n_, t, np_), p1 = range_begin(n_, t + 1, np_);
   double* __restrict x = x_.data();
   double* __restrict y = y_.data();
   double* __restrict vx = vx_.data();
@@ -641,14 +650,18 @@ void DemSystem::gather(int t, bool kick, bool do_check, bool drift_next) {
   double* __restrict aw_out = tq_.data();
   int* __restrict nc_out = ncontact_.data();
   long long* __restrict free_steps = free_steps_.data();
-  ForceAcc* bufs[8];
-  const int nt = nt_;
-  for (int u = 0; u < nt && u < 8; ++u) bufs[u] = td_[u].f.data();
+  // The partitions whose contacts can reach this range, in partition order.
+  ForceAcc* bufs[kPartitions];
+  int lo[kPartitions], hi[kPartitions], nb = 0;
+  for (int u = 0; u < np_; ++u)
+    if (part_lo_[u] < p1 && part_hi_[u] >= p0) bufs[nb] = td_[u].f.data(), lo[nb] = part_lo_[u], hi[nb] = part_hi_[u], ++nb;
+  ForceAcc* __restrict wacc = wacc_.data();
   for (int i = p0; i < p1; ++i) {
-    ForceAcc a = bufs[0][i];
-    bufs[0][i] = ForceAcc{};
-    for (int u = 1; u < nt; ++u) {
-      ForceAcc& b = u < 8 ? bufs[u][i] : td_[u].f[i];
+    ForceAcc a = wacc[i];
+    wacc[i] = ForceAcc{};
+    for (int u = 0; u < nb; ++u) {
+      if (i < lo[u] || i > hi[u]) continue;
+      ForceAcc& b = bufs[u][i];
       a.fx += b.fx, a.fy += b.fy, a.tq += b.tq, a.nc += b.nc;
       b = ForceAcc{};
     }
@@ -802,16 +815,16 @@ void DemSystem::advance(long long steps) {
       case kGather: gather(k, !args.first, args.do_check, args.drift_next); break;
     }
   };
-  // Control thread: open a phase of nt_ items (the partitions), work on it, wait for the rest.
+  // Control thread: open a phase of np_ items (the partitions), work on it, wait for the rest.
   auto run = [&](int kind) {
-    const unsigned s = queue.publish(kind, nt_);
+    const unsigned s = queue.publish(kind, np_);
     unsigned cs;
     int ck, item;
     while (queue.claim(cs, ck, item)) {
       execute(ck, item);
       queue.complete(cs);
     }
-    for (int spins = 0; !queue.finished(s, nt_);) relax(spins);
+    for (int spins = 0; !queue.finished(s, np_);) relax(spins);
   };
 
 #pragma omp parallel num_threads(nt_)

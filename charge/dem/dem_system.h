@@ -14,11 +14,11 @@
 // outermost node do); the tangential spring of each pair moves to the new
 // list. Walls: each disc near the wall is tested against its candidate
 // elements, listed with the neighbour list in the wall's body frame. Threads:
-// the work of each phase is cut into `threads` fixed partitions (particle
-// ranges for the kicks, a work-balanced split of the list rows for the
-// contacts), partition k adding into its own force buffer k; the buffers are
-// summed in partition order, so a run repeats bit for bit for a given thread
-// count, whichever thread ran which partition (docs/models/dem.md §6).
+// the work of each phase is cut into 8 fixed partitions (particle ranges for
+// the kicks, a work-balanced split of the list rows for the contacts),
+// partition k adding into its own force buffer k; the buffers are summed in
+// partition order, so a run repeats bit for bit whatever the thread count and
+// whichever thread ran which partition (docs/models/dem.md §6).
 //
 // Units SI; 2D discs are cylinders of unit length: masses [kg/m], forces [N/m],
 // torques [N m/m], moments of inertia [kg m2/m].
@@ -41,7 +41,7 @@ struct DemSettings {
   double wall_omega = 0;       // [rad/s] wall angular velocity about the origin, anticlockwise positive
   double wall_angle0 = 0;      // [rad] wall body-frame angle at t = 0
   double skin = 0;             // [m] Verlet-list skin; 0: 0.75 x the mean radius
-  int threads = 1;
+  int threads = 1;             // OpenMP threads; the results do not depend on it
   double impact_min_speed = 0.1;  // [m/s] wall-contact onsets at least this fast (normal) are recorded
   double escape_radius = 0;    // [m] > 0: a disc centre farther than this from the origin has left the mill
   double speed_limit = 0;      // [m/s] > 0: a disc faster than this means the run blew up
@@ -150,6 +150,7 @@ class DemSystem {
  private:
   struct ThreadData;
   struct PackedElement;
+  struct ForceAcc;
   struct StepClock {
     long long step = 0;  // step the forces are evaluated for
     double time = 0;     // [s]
@@ -173,6 +174,11 @@ class DemSystem {
   DemSettings set_;
   WallMesh walls_;
   int n_ = 0, nt_ = 1;
+  // The work of a step is cut into this many fixed partitions whatever the
+  // thread count, so a run repeats bit for bit on 1 or 2 threads.
+  static constexpr int kPartitions = 8;
+  int np_ = kPartitions;
+  std::vector<int> part_lo_, part_hi_;  // discs partition k's contacts can write to (its rows and their partners)
   // particles (SoA)
   std::vector<double> x_, y_, vx_, vy_, w_, r_, m_, invm_, invI_;
   std::vector<double> fx_, fy_, tq_;  // accelerations [m/s2] and angular acceleration [rad/s2] of the last gather
@@ -203,6 +209,7 @@ class DemSystem {
   std::vector<double> shadow_slot_xi_;
   std::vector<ThreadData> td_;
   std::vector<PackedElement> packed_;  // walls_ elements, one cache line each
+  std::vector<ForceAcc> wacc_;         // liner contact force, torque and count of each disc (one partition writes each)
   // time
   double time_ = 0, angle_ = 0, cos_a_ = 1, sin_a_ = 0;
   long long step_ = 0;
