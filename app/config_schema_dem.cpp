@@ -94,7 +94,7 @@ void add_dem_keys(Schema& s) {
   k.push_back(int_key("dem", "seed", "Random seed of the sizes and the placement", 0, (1LL << 62), false,
                       [](Config& c, long long v) { c.model.dem.seed = v; }, [](const Config& c) { return c.model.dem.seed; },
                       1));
-  k.push_back(int_key("dem", "threads", "OpenMP threads (0: all available); the results repeat for a seed whatever the thread count",
+  k.push_back(int_key("dem", "threads", "OpenMP threads (0: all cores, 1 while a second does not pay); results repeat for a seed whatever the count",
                       0, 256, false, [](Config& c, long long v) { c.model.dem.threads = static_cast<int>(v); },
                       [](const Config& c) { return static_cast<long long>(c.model.dem.threads); }, 0));
 }

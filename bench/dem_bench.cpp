@@ -22,7 +22,8 @@
 //
 //   bench_dem realtime CONFIG.toml THREADS REPS [REVOLUTIONS]
 //     The whole dem model (settling 1 revolution, then REVOLUTIONS, default 1,
-//     averaged, indicators and loads) on a configuration. One line per
+//     averaged, indicators and loads) on a configuration; THREADS 0 is the
+//     model's default (all cores, adapting to the load). One line per
 //     repetition: particles, threads, simulated s, wall s, real-time ratio,
 //     particle-steps/s.
 //

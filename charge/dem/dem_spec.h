@@ -37,7 +37,7 @@ struct DemSpec {
   double settle_revolutions = 1.5;     // [-] revolutions run before averaging starts
   double impact_min_speed_m_s = 0.1;   // [m/s] contact onsets slower than this (normal) are not impacts
   long long seed = 1;                  // random placement and sizes; runs repeat exactly for a seed
-  int threads = 0;                     // OpenMP threads; 0: all available (the results do not depend on it)
+  int threads = 0;                     // OpenMP threads; 0: all cores, adapting to the load (the results do not depend on it)
 };
 
 }  // namespace linerlife

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -827,7 +828,24 @@ void DemSystem::advance(long long steps) {
     for (int spins = 0; !queue.finished(s, np_);) relax(spins);
   };
 
-#pragma omp parallel num_threads(nt_)
+  // Threads for this call. With adapt_threads, 1 or nt_, whichever cost less
+  // per particle-step lately, trying the other one every 32nd call: on a machine
+  // shared with other jobs a second thread can cost more than it brings.
+  int use = nt_;
+  int slot = 1;
+  if (set_.adapt_threads && nt_ > 1) {
+    ++calls_;
+    const bool explore = calls_ % 32 == 0;
+    int best = 1;
+    if (cost_ema_[1] == 0) best = 1;                   // not tried yet: try nt_
+    else if (cost_ema_[0] == 0) best = 0;              // then 1
+    else best = cost_ema_[0] < cost_ema_[1] ? 0 : 1;
+    slot = explore && cost_ema_[0] > 0 && cost_ema_[1] > 0 ? 1 - best : best;
+    use = slot == 0 ? 1 : nt_;
+  }
+  last_threads_ = use;
+  const auto t_call = std::chrono::steady_clock::now();
+#pragma omp parallel num_threads(use)
   {
     if (omp_get_thread_num() != 0) {
       // helper: take items until the control thread stops
@@ -898,6 +916,10 @@ void DemSystem::advance(long long steps) {
   // the clock of the last completed step
   long long done = 0;
   for (const auto& d : td_) done = std::max(done, d.steps_done);
+  if (set_.adapt_threads && nt_ > 1 && done >= 20 && n_ > 0) {
+    const double c = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_call).count() / (done * n_);
+    cost_ema_[slot] = cost_ema_[slot] == 0 ? c : 0.7 * cost_ema_[slot] + 0.3 * c;
+  }
   step_ = step0 + done;
   time_ = step_ * set_.dt;
   angle_ = set_.wall_angle0 + set_.wall_omega * time_;

@@ -41,7 +41,8 @@ struct DemSettings {
   double wall_omega = 0;       // [rad/s] wall angular velocity about the origin, anticlockwise positive
   double wall_angle0 = 0;      // [rad] wall body-frame angle at t = 0
   double skin = 0;             // [m] Verlet-list skin; 0: 0.75 x the mean radius
-  int threads = 1;             // OpenMP threads; the results do not depend on it
+  int threads = 1;             // OpenMP threads at most; the results do not depend on it
+  bool adapt_threads = false;  // between 1 and `threads`, use whichever ran faster lately (a shared machine)
   double impact_min_speed = 0.1;  // [m/s] wall-contact onsets at least this fast (normal) are recorded
   double escape_radius = 0;    // [m] > 0: a disc centre farther than this from the origin has left the mill
   double speed_limit = 0;      // [m/s] > 0: a disc faster than this means the run blew up
@@ -143,6 +144,7 @@ class DemSystem {
   long long pair_contact_steps() const { return pair_contact_steps_; }  // sum over steps of particle contacts
   long long wall_contact_steps() const { return wall_contact_steps_; }
   long long list_builds() const { return builds_; }
+  int last_threads() const { return last_threads_; }  // threads the last advance() used
   double list_entries_per_disc() const { return n_ ? static_cast<double>(nb_j_.size()) / n_ : 0.0; }  // at the last build
   double max_overlap_ratio() const { return max_overlap_ratio_; }  // largest disc-disc overlap / smaller radius seen
   double max_wall_overlap_ratio() const { return max_wall_overlap_ratio_; }  // largest disc-wall overlap / radius
@@ -216,6 +218,10 @@ class DemSystem {
   bool forces_valid_ = false, rebuild_needed_ = true, accumulate_ = false, record_next_ = false;
   double skin_ = 0, rmax_ = 0, rmin_ = 0;
   long long pair_contact_steps_ = 0, wall_contact_steps_ = 0, builds_ = 0;
+  // adaptive thread count: [s] per particle-step, moving average, for 1 thread and for nt_
+  double cost_ema_[2] = {0, 0};
+  long long calls_ = 0;
+  int last_threads_ = 1;
   double max_overlap_ratio_ = 0, max_wall_overlap_ratio_ = 0;
   double accum_duration_ = 0;
   long long accum_start_step_ = 0;
