@@ -379,7 +379,9 @@ inline double tangential_force(double& xi, double vt, double dt, double kt, doub
 /// larger than what stops wrel within the step (so it never reverses it).
 inline double rolling_torque(double mu_r, double fn, double rstar, double wrel, double inv_i_sum, double dt) {
   if (mu_r <= 0 || fn <= 0 || wrel == 0) return 0;
-  const double m = std::min(mu_r * fn * rstar, std::abs(wrel) / (dt * inv_i_sum));
+  double m = mu_r * fn * rstar;
+  const double aw = std::abs(wrel);
+  if (m * dt * inv_i_sum > aw) m = aw / (dt * inv_i_sum);  // would reverse the relative rotation
   return -std::copysign(m, wrel);
 }
 
