@@ -44,6 +44,7 @@ struct ChargeResult {
   LinerLoads loads;
   RunStats stats;
   std::vector<ChargeSnapshot> snapshots;  // when record_snapshot
+  std::vector<std::string> notes;         // things the user should know (sub-stepping, centrifuging...)
 };
 
 class ChargeModel {
