@@ -133,6 +133,17 @@ void check_and_resolve(Config& c) {
     fail_at(c, "mill.speed_rpm",
             c.speed_rpm ? "give exactly one of [mill] speed_rpm and speed_fraction_critical, not both"
                         : "missing key [mill] speed_rpm or speed_fraction_critical (give exactly one)");
+  // charge-motion keys that depend on each other
+  if ((c.charge.discharge == Discharge::Overflow || c.charge.cone_length_m > 0) && !(c.charge.trunnion_radius_m > 0))
+    fail_at(c, c.charge.discharge == Discharge::Overflow ? "mill.discharge" : "mill.cone_length_m",
+            "missing key [mill] trunnion_diameter_m (required by discharge = \"overflow\" and by cone_length_m > 0)");
+  if (c.charge.trunnion_radius_m >= c.mill.shell_radius_m())
+    fail_at(c, "mill.trunnion_diameter_m",
+            fmt::format("trunnion_diameter_m = {} is not smaller than the mill diameter {}",
+                        2 * c.charge.trunnion_radius_m, c.mill.diameter_m));
+  if (c.model.slurry_drag && c.charge.discharge != Discharge::Overflow)
+    fail_at(c, "model.slurry_drag",
+            "slurry_drag = \"on\" needs discharge = \"overflow\": a grate mill has no slurry pool");
   if (c.charge.ball_filling > c.charge.filling)
     fail_at(c, "charge.ball_filling",
             fmt::format("ball_filling = {} is larger than filling = {}: the balls are part of the charge, so "

@@ -1,6 +1,13 @@
 // canonical_surface.h - every charge model of this module computes an
-// anticlockwise mill; a clockwise mill is its mirror image (x -> -x,
-// DESIGN.md §3). This makes the mirrored liner surface and the maps back.
+// anticlockwise mill; a clockwise mill is its mirror image (x -> -x, theta ->
+// 180 deg - theta; DESIGN.md §3). This makes the mirrored liner surface and
+// the maps back.
+//
+// The mirror of segment k of the input (centred on k D, D = 2 pi / segments)
+// is centred on pi - k D. With an even number of segments that is segment
+// (segments/2 - k); with an odd number it falls half a segment off, so the
+// mirrored ring is also turned by -D/2, and the model starts the liner at
+// that angle (initial_angle_rad), which is the same physical mill.
 #pragma once
 
 #include <vector>
@@ -16,6 +23,9 @@ struct CanonicalSurface {
   LinerSurface surface;              // anticlockwise-mill frame (a copy of the input for an anticlockwise mill)
   bool mirrored = false;             // the input mill turns clockwise
   std::vector<int> physical_element; // canonical element -> element of the input surface
+  std::vector<int> physical_segment; // canonical segment -> segment of the input surface
+  int segment_of_physical_0 = 0;     // canonical segment of the input's segment 0
+  double initial_angle_rad = 0;      // [rad] where the canonical liner frame is at t = 0 (mill frame)
 
   /// Physical-frame angle [rad] of a canonical angle: theta, or pi - theta when mirrored.
   double physical_angle(double theta_rad) const { return mirrored ? kPi - theta_rad : theta_rad; }
@@ -24,9 +34,7 @@ struct CanonicalSurface {
   }
 };
 
-/// The canonical surface of `s` for a mill turning `rotation`. For a clockwise
-/// mill, segment k of the input becomes segment (segments - k) mod segments
-/// (so segment 0 stays segment 0) and nodes are reordered to run anticlockwise.
+/// The canonical surface of `s` for a mill turning `rotation`.
 CanonicalSurface make_canonical_surface(const LinerSurface& s, Rotation rotation);
 
 }  // namespace linerlife

@@ -29,7 +29,7 @@ struct ChargeSpec {
 struct ModelSpec {
   std::string charge = "layer";   // "empirical" | "layer" | "dem"
   std::string variant = "1.2";    // layer model version of thesis §4.6: "1.0" | "1.1" | "1.2"
-  double time_step_s = 0.01;      // [s] time step of the layer model
+  double time_step_s = 0.005;     // [s] time step of the layer model (default from the study in docs/models/layer.md)
   // Added by the charge-motion issue (layer model, docs/models/layer.md):
   std::string slip_model = "morrell";   // layer speeds: "morrell" (thesis eq. 4.16) | "radziszewski" (eqs. 5.5-5.7)
   double slip_parameter = 0.005;        // [-] delta of the Radziszewski slip law (eq. 5.7)

@@ -55,6 +55,7 @@ struct RunStats {
   int substeps = 1;         // sub-steps per requested step (1: the requested step was stable)
   long long elements = 0;   // discrete elements / particles simulated
   long long flights = 0;    // flights launched during the run
+  double charge_mass_kg_per_m = 0;  // [kg/m] mass of all elements (conserved), per metre of length
 };
 
 }  // namespace linerlife

@@ -18,6 +18,7 @@
 #include "charge/liner_ride_table.h"
 #include "charge/morrell_c_model.h"
 #include "charge/slip_model.h"
+#include "charge/slurry_drag.h"
 #include "geometry/errors.h"
 #include "geometry/metrics.h"
 
@@ -83,6 +84,20 @@ struct HeldLaunch {
   double vr = 0, vt = 0;   // [m/s] launch velocity, polar components
 };
 
+struct Landing {
+  double t = 0;        // [s]
+  int flight = 0;      // index in the flight list
+  int bin = -1;        // ride-table bin of a liner impact, -1 for a landing on the charge
+  V p = V::Zero(), v = V::Zero();  // [m], [m/s] state at landing
+};
+
+/// A slot reaching its flight angle within the current step.
+struct DepartureEvent {
+  double t;  // [s]
+  int j, s;  // layer, slot
+  int seg;   // segment of the lifter holding it, -1 if unheld
+};
+
 struct Flight {
   int id = 0, from_layer = 0;
   double t_rel = 0;   // [s] leaves its slot (start of the slide along a lifter face)
@@ -90,16 +105,15 @@ struct Flight {
   V p0, v0;           // [m], [m/s] state at t0
   V p_rel;            // [m] where it left its slot
   double t_check = 0; // [s] path checked up to here
-  double t_next = 0;  // [s] end of the next interval to check (it is checked once the steps reach it)
+  double t_next = 0;  // [s] end of the next interval to check
+  bool landed = false;  // a landing has been found, at `landing` (it happens when the steps get there)
+  Landing landing;
   bool drag = false;  // in the slurry pool: p0, v0 are advanced numerically
+  double grace = 0;   // [s] no contact with the charge counts before this time (a relaunched element
+                      //     first clears the cell it rolled off)
 };
 
-struct Landing {
-  double t;      // [s]
-  int flight;    // index in the flight list
-  int bin;       // ride-table bin of a liner impact, -1 for a landing on the charge
-  V p, v;        // [m], [m/s] state at landing
-};
+
 
 class LayerSim {
  public:
@@ -138,7 +152,7 @@ class LayerSim {
     while (h > 0 && occ(h - 1, slot_of(h - 1, theta, tau)) < 0) --h;
     return h;
   }
-  double mill_angle(double tau) const { return omega_ * tau; }
+  double mill_angle(double tau) const { return omega_ * tau + canon_.initial_angle_rad; }
   /// Where an en-masse element of layer j at polar angle theta is drawn: the
   /// outer layer rides on the liner; inner layers keep their radius unless a
   /// lifter below pushes them in.
@@ -163,6 +177,11 @@ class LayerSim {
   bool inside_charge(const V& q, double r, double theta, double tq) const;
   void drag_advance(Flight& f, double h) const;
   void deposit(int id, double theta, double tau, const V& v_land);
+  /// Puts element `id`, which is in no slot, at (k, s) at time tau and lets
+  /// it settle by the foot-stability rules.
+  void place(int id, int k, int s, double tau);
+  /// The slot is on the rising side beyond the flight angle of its layer.
+  bool past_flight_angle(int k, int s, double tau) const;
   /// An element just placed in slot s of layer j at time tau: if it is past
   /// where the layer lets go, it leaves now; if it gets there before the end
   /// of the current step, it leaves then (departures() has already run).
@@ -173,6 +192,13 @@ class LayerSim {
   void leave_slot(int id, int j, int s, double tau);
   /// Element `id` comes to slot s of layer j at tau.
   void enter_slot(int id, int j, int s, double tau);
+  /// Foot stability of the whole surface: the top element of every column
+  /// rolls to a neighbouring column where the surface is steeper than the
+  /// angle of repose (or where its layer cannot hold it), a sandpile rule.
+  void relax_surface(double tau);
+  /// Whether the element at (k, s) at tau would roll, and where: the top
+  /// cell (kn, sn) of the steepest-descent neighbouring column.
+  bool roll_target(int k, int s, double tau, int& kn_out, int& sn_out);
   /// Column heights round the outer layer and their window maxima, at tau.
   void update_columns(double tau);
   /// A lower bound [m] on the distance from (r, theta) at time tau to any cell
@@ -212,7 +238,9 @@ class LayerSim {
   std::vector<double> phase0_;              // [rad] phase of each layer at t = 0 (the phase is phase0 + omega t)
   std::vector<Flight> flights_;
   std::vector<Landing> landings_;
+  std::vector<DepartureEvent> dep_events_;
   std::vector<int> gone_;
+  std::vector<int> moved_;                  // scratch of support_sweep
   double t_step0_ = 0;
   double t_step1_ = 0;                      // end of the current step
   double dt_ = 0;
@@ -476,7 +504,7 @@ void LayerSim::setup_flight_angles() {
         const double above = (j + 0.5) * d_ - sm.lifter_height_m;
         const double alpha = std::max(sm.face_angle_leading_deg * kPi / 180.0,
                                       std::asin(std::clamp(above / a_, 0.0, 1.0)));
-        const LifterLaunch ll = lifter_launch(l.omega, r0, r_crest, a_, alpha, mu_, in_.model.lifter_slide, cl);
+        const LifterLaunch ll = lifter_launch(omega_, r0, r_crest, a_, alpha, mu_, in_.model.lifter_slide, cl);
         h.released = ll.released;
         if (!ll.released) continue;
         h.release = ll.release_rad;
@@ -551,8 +579,7 @@ void LayerSim::leave_slot(int id, int j, int s, double tau) {
   layer_count_acc_[j] += tb - ta;
   const double a0 = phase0_[j] + l.omega * ta + s * l.delta, a1 = phase0_[j] + l.omega * tb + s * l.delta;
   const double spr = 1.0 / l.omega;
-  if (!canon_.mirrored) occupancy_->add_arc(j, a0, a1, spr, d_ * d_, m_);
-  else occupancy_->add_arc(j, kPi - a1, kPi - a0, spr, d_ * d_, m_);
+  occupancy_->add_arc(j, a0, a1, spr, d_ * d_, m_);  // canonical frame
 }
 
 // ============================================================================
@@ -582,8 +609,11 @@ void LayerSim::launch(int j, int s, double tau, int seg, bool relaunch) {
   f.from_layer = j;
   f.t_rel = tau;
   const double th = slot_angle(j, s, tau);
-  f.p_rel = drawn_radius(j, th, tau) * V(std::cos(th), std::sin(th));
-  if (seg >= 0) {
+  // the element leaves from where it is drawn: on the liner profile for the
+  // outer layer (never inside a lifter), else at its layer's radius
+  const double r_at = drawn_radius(j, th, tau);
+  f.p_rel = r_at * V(std::cos(th), std::sin(th));
+  if (seg >= 0 && held_[j][seg].slide_s > 0) {
     const HeldLaunch& h = held_[j][seg];
     const double tl = th + h.dtheta;
     const V er(std::cos(tl), std::sin(tl)), et(-std::sin(tl), std::cos(tl));
@@ -591,13 +621,17 @@ void LayerSim::launch(int j, int s, double tau, int seg, bool relaunch) {
     f.p0 = h.radius * er;
     f.v0 = h.vr * er + h.vt * et;
   } else {
+    // a held element leaves with its lifter's velocity, an unheld one with its layer's
+    const double w = seg >= 0 ? omega_ : L_[j].omega;
     const V er(std::cos(th), std::sin(th)), et(-std::sin(th), std::cos(th));
     f.t0 = tau;
-    f.p0 = L_[j].r * er;
-    f.v0 = L_[j].omega * L_[j].r * et;
+    f.p0 = r_at * er;
+    f.v0 = w * r_at * et;
   }
   f.t_check = f.t0;
   f.t_next = f.t0;
+  // a relaunch from the charge surface: clear one diameter before the charge counts again
+  f.grace = relaunch ? f.t0 + d_ / std::max(f.v0.norm(), 0.1 * omega_ * r_at) : f.t0;
   // Work done by the mill since the element entered the charge at rest
   // (Morrell's energy reading of the C-model, reference §1): lift + kinetic.
   if (!relaunch && averaging_ && f.t0 >= t_avg0_ && f.t0 < t_end_)
@@ -607,6 +641,7 @@ void LayerSim::launch(int j, int s, double tau, int seg, bool relaunch) {
 }
 
 void LayerSim::departures(double t0, double t1) {
+  dep_events_.clear();
   const double dt = t1 - t0;
   for (int j = 0; j < n_open_; ++j) {
     Layer& l = L_[j];
@@ -617,7 +652,7 @@ void LayerSim::departures(double t0, double t1) {
       const double lo = std::min(l.rel_min, l.release), hi = std::max(l.rel_max, std::isfinite(l.release) ? l.release : -kInf);
       if (!std::isfinite(lo)) continue;
       const double u = wrap2pi(lo - l.phase);
-      const int s_lo = static_cast<int>(std::ceil((u - wdt) * l.inv_delta));
+      const int s_lo = static_cast<int>(std::ceil((u - 2 * wdt) * l.inv_delta));
       const int s_hi = static_cast<int>(std::ceil((u + (hi - lo)) * l.inv_delta));
       for (int s = s_lo; s <= s_hi; ++s) {
         int si = s % l.S;
@@ -630,36 +665,33 @@ void LayerSim::departures(double t0, double t1) {
         const double rel = h.held ? (h.released ? h.release : kInf) : l.release;
         if (!std::isfinite(rel)) continue;
         const double w = std::remainder(rel - a0, kTwoPi);
-        if (w > 0 && w <= wdt) launch(j, si, t0 + w / l.omega, h.held ? seg : -1);
+        if (w > -wdt && w <= wdt) dep_events_.push_back({t0 + w / l.omega, j, si, h.held ? seg : -1});
       }
     } else {
       if (!std::isfinite(l.release)) continue;
+      // slots crossing the flight angle in this step, or in the previous one
+      // after its scan (placed there by a landing): w in (-wdt, wdt]
       const double u = wrap2pi(l.release - l.phase);
       const int s_lo = static_cast<int>(std::ceil((u - wdt) * l.inv_delta));
-      const int s_hi = static_cast<int>(std::ceil(u * l.inv_delta)) - 1;
+      const int s_hi = static_cast<int>(std::ceil((u + wdt) * l.inv_delta)) - 1;
       for (int s = s_lo; s <= s_hi; ++s) {
         int si = s % l.S;
         if (si < 0) si += l.S;
         if (occ(j, si) < 0) continue;
-        const double w = u - s * l.delta;  // in (0, wdt]
-        launch(j, si, t0 + w / l.omega, -1);
+        const double w = u - s * l.delta;
+        dep_events_.push_back({t0 + w / l.omega, j, si, -1});
       }
     }
   }
 }
 
 void LayerSim::drag_advance(Flight& f, double h) const {
-  // Thesis Appendix C (lines 146-186): sphere drag with C_d = 0.2021
-  // exp(4.7297 Re^-0.2101), slurry viscosity 0.00278 Pa s, and buoyancy;
-  // here in vector form, with Stokes' law below Re = 1, and implicit in the
-  // drag so that it can never reverse the velocity (docs/models/layer.md).
-  const double rf = rho_pulp_, rp = rho_solid_;
-  const double sp = f.v0.norm();
-  const double Re = std::max(1e-9, rf * sp * d_ / 0.00278);
-  const double Cd = Re >= 1.0 ? 0.2021 * std::exp(4.7297 * std::pow(Re, -0.2101)) : 24.0 / Re;
-  const double k = 0.75 * Cd * rf * sp / (rp * d_);  // [1/s]
-  const V g(0, -kGravity * (1.0 - rf / rp));          // gravity less buoyancy
-  const V v_new = (f.v0 + h * g) / (1.0 + k * h);
+  // the pool's drag (slurry_drag.h), velocity implicit, position trapezoidal
+  SlurryDrag sd;
+  sd.fluid_density_kg_m3 = rho_pulp_;
+  sd.particle_density_kg_m3 = rho_solid_;
+  sd.diameter_m = d_;
+  const V v_new = slurry_drag_step(sd, f.v0, h);
   f.p0 += 0.5 * h * (f.v0 + v_new);
   f.v0 = v_new;
   f.t0 += h;
@@ -691,73 +723,79 @@ bool LayerSim::inside_charge(const V& q, double r, double theta, double tq) cons
 }
 
 bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
-  // Intervals of the path are checked once the steps have passed their end,
-  // so that the number of checks does not depend on the time step.
-  if (t1 < f.t_next || t1 <= f.t0) return false;
+  // Each interval of the path is checked once, as soon as the steps reach its
+  // start (so the number of checks does not depend on the time step); a
+  // landing found beyond the current step is kept until the steps reach it.
+  if (f.landed) {
+    if (f.landing.t > t1) return false;
+    out = f.landing;
+    return true;
+  }
+  if (t1 <= f.t_next || t1 <= f.t0) return false;
   if (drag_on_) return check_flight_drag(f, t1, out);
   const double r_ride_min = ride_.min_ride_m;
   const double sample_len = 0.5 * d_;
   const V acc(0, -kGravity);
-  double tau = std::max(f.t_check, f.t0);
+  double tau = f.t_next;
   V pa = flight_position(f, tau), va = flight_velocity(f, tau);
   double ra = pa.norm(), tha = fast_atan2(pa.y(), pa.x());
-  for (;;) {
-    if (f.t_next > tau) {
-      // the pending interval (tau, t_next]: a fine check
-      const double tb = f.t_next;
-      const V pb = flight_position(f, tb);
-      const double rb = pb.norm(), thb = fast_atan2(pb.y(), pb.x());
-      double t_hit = kInf;
-      int bin = -1;
-      if (rb >= r_ride_min || ra >= r_ride_min) liner_crossing(pa, va, acc, tau, tb, t_hit, bin);
-      if (inside_charge(pb, rb, thb, tb)) {  // ends in an occupied cell: bisect for the entry
-        double lo = tau, hi = tb;
-        for (int it = 0; it < 6; ++it) {
-          const double mid = 0.5 * (lo + hi);
-          const V q = flight_position(f, mid);
-          if (inside_charge(q, q.norm(), fast_atan2(q.y(), q.x()), mid)) hi = mid;
-          else lo = mid;
-        }
-        if (lo < t_hit) t_hit = lo, bin = -1;
-      }
-      if (t_hit < kInf) {
-        out.t = t_hit;
-        out.bin = bin;
-        out.p = flight_position(f, t_hit);
-        out.v = flight_velocity(f, t_hit);
-        return true;
-      }
-      f.t_check = tau = tb;
-      pa = pb;
-      va = flight_velocity(f, tb);
-      ra = rb;
-      tha = thb;
-      if (tau - f.t_rel > 60.0 * kTwoPi / omega_)
-        throw SimulationError(fmt::format("layer model: element {} has been in flight for {:.1f} s without landing", f.id, tau - f.t_rel));
-    }
-    // plan the next interval from the state at tau
+  while (tau < t1) {
     const double spv = std::sqrt(va.squaredNorm());
     // Clear of the liner and of the charge: jump by the time needed to cover
     // the distance to the nearer (no check needed).
     const double dist = std::min(r_ride_min - ra, bed_clearance(ra, tha, tau));
     if (dist > sample_len) {
       const double sp = std::max(spv, 1e-3);
-      f.t_check = f.t_next = tau + std::min(skip_H_, (-sp + std::sqrt(sp * sp + 2 * kGravity * dist)) / kGravity);
-      if (f.t_next > t1) return false;
-      tau = f.t_next;
+      tau += std::min(skip_H_, (-sp + std::sqrt(sp * sp + 2 * kGravity * dist)) / kGravity);
+      f.t_next = tau;
+      if (tau >= t1) return false;
       pa = flight_position(f, tau);
       va = flight_velocity(f, tau);
       ra = pa.norm();
       tha = fast_atan2(pa.y(), pa.x());
       continue;
     }
-    // near something: an interval of half a diameter, relative to the turning liner too
+    // near something: check an interval of half a diameter, relative to the
+    // turning liner too
     const double vx = va.x() + omega_ * pa.y(), vy = va.y() - omega_ * pa.x();
     const double vrel = std::sqrt(vx * vx + vy * vy);
-    f.t_check = tau;
-    f.t_next = tau + sample_len / std::max({spv, vrel, 1e-3});
-    if (f.t_next > t1) return false;
+    const double tb = tau + sample_len / std::max({spv, vrel, 1e-3});
+    const V pb = flight_position(f, tb);
+    const double rb = pb.norm(), thb = fast_atan2(pb.y(), pb.x());
+    double t_hit = kInf;
+    int bin = -1;
+    if (rb >= r_ride_min || ra >= r_ride_min) liner_crossing(pa, va, acc, tau, tb, t_hit, bin);
+    if (tb > f.grace && inside_charge(pb, rb, thb, tb)) {  // ends in an occupied cell: bisect for the entry
+      double lo = std::max(tau, f.grace), hi = tb;
+      for (int it = 0; it < 6; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        const V q = flight_position(f, mid);
+        if (inside_charge(q, q.norm(), fast_atan2(q.y(), q.x()), mid)) hi = mid;
+        else lo = mid;
+      }
+      if (lo < t_hit) t_hit = lo, bin = -1;
+    }
+    if (t_hit < kInf) {
+      Landing& l = f.landing;
+      l.t = t_hit;
+      l.bin = bin;
+      l.p = flight_position(f, t_hit);
+      l.v = flight_velocity(f, t_hit);
+      f.landed = true;
+      if (t_hit > t1) return false;
+      out = l;
+      return true;
+    }
+    tau = tb;
+    f.t_next = tau;
+    pa = pb;
+    va = flight_velocity(f, tb);
+    ra = rb;
+    tha = thb;
+    if (tau - f.t_rel > 60.0 * kTwoPi / omega_)
+      throw SimulationError(fmt::format("layer model: element {} has been in flight for {:.1f} s without landing", f.id, tau - f.t_rel));
   }
+  return false;
 }
 
 bool LayerSim::check_flight_drag(Flight& f, double t1, Landing& out) {
@@ -836,7 +874,24 @@ void LayerSim::check_flights(double t1) {
     if (x.t != y.t) return x.t < y.t;
     return flights_[x.flight].id < flights_[y.flight].id;
   });
+  // departures and landings of this step, in the order they happen
+  std::sort(dep_events_.begin(), dep_events_.end(), [](const DepartureEvent& x, const DepartureEvent& y) {
+    if (x.t != y.t) return x.t < y.t;
+    if (x.j != y.j) return x.j < y.j;
+    return x.s < y.s;
+  });
+  size_t di = 0;
+  auto depart_until = [&](double t) {
+    for (; di < dep_events_.size() && dep_events_[di].t <= t; ++di) {
+      const DepartureEvent& e = dep_events_[di];
+      const int id = occ(e.j, e.s);
+      if (id < 0) continue;
+      // an element placed there after the slot crossed leaves when it came
+      launch(e.j, e.s, std::max(e.t, elem_t_slot_[id]), e.seg);
+    }
+  };
   for (const Landing& l : landings_) {
+    depart_until(l.t);
     const Flight& f = flights_[l.flight];
     const double th = std::atan2(l.p.y(), l.p.x());
     if (l.bin >= 0 && averaging_ && l.t >= t_avg0_) {
@@ -871,6 +926,7 @@ void LayerSim::check_flights(double t1) {
     }
     deposit(f.id, th, l.t, l.v);
   }
+  depart_until(t1);
   // drop landed flights (indices in landings_ refer to the list before removal)
   if (landings_.empty()) return;
   // remove the landed flights (highest index first, swapping in the last)
@@ -921,11 +977,11 @@ void LayerSim::deposit(int id, double theta, double tau, const V& v_land) {
       const int step = ut < 0 ? -1 : 1;
       int moved = 0;
       for (int i = 0; i < n_cols; ++i) {
-        int sn = s0 + step;
-        if (sn < 0) sn += l0.S;
-        else if (sn >= l0.S) sn -= l0.S;
-        if (col_[sn] > k || col_[sn] >= n_open_) break;
-        s0 = sn;
+        int next = s0 + step;
+        if (next < 0) next += l0.S;
+        else if (next >= l0.S) next -= l0.S;
+        if (col_[next] > k || col_[next] >= n_open_) break;
+        s0 = next;
         ++moved;
       }
       if (moved > 0) {
@@ -938,38 +994,50 @@ void LayerSim::deposit(int id, double theta, double tau, const V& v_land) {
       }
     }
   }
-  int s = slot_of(k, theta, tau);
-  // Foot stability: an element on a slope steeper than the angle of repose
-  // rolls down to the neighbouring column (docs/models/layer.md §Foot).
-  const double tan_g = std::tan(gamma_);
-  for (int it = 0; it < 400; ++it) {
-    const double th = slot_angle(k, s, tau);
-    const double x = L_[k].r * std::cos(th), y = L_[k].r * std::sin(th);
-    occ(k, s) = id;  // tentatively here; neighbours are judged with it in place
-    int best_k = -1, best_s = -1;
-    double best_y = y;
-    for (double dir : {-1.0, 1.0}) {
-      const double thn = th + dir * L_[k].delta;
+  place(id, k, slot_of(k, theta, tau), tau);
+}
+
+bool LayerSim::past_flight_angle(int k, int s, double tau) const {
+  const double th = slot_angle(k, s, tau);
+  const double fa = flight_angle(k);
+  return std::cos(th) > 0 && std::isfinite(fa) && std::sin(th) > std::sin(fa);
+}
+
+void LayerSim::place(int id, int k, int s, double tau) {
+  // Foot stability, 2: an element on a slope steeper than the angle of
+  // repose rolls down to the neighbouring column; one over a void falls onto
+  // the column below; one on the rising side past the flight angle of its
+  // layer (which cannot hold it there) rolls down the charge surface
+  // (docs/models/layer.md §Foot).
+  auto roll = [&] {
+    for (int it = 0; it < 400; ++it) {
+      occ(k, s) = id;  // tentatively here; neighbours are judged with it in place
+      int kn, sn;
+      const bool rolls = roll_target(k, s, tau, kn, sn);
       occ(k, s) = -1;
-      const int kn = ncol(thn, tau);
-      occ(k, s) = id;
-      if (kn >= n_open_) continue;
-      if (kn == 0 && k == 0) continue;  // on the liner the lifters hold it
-      const int sn = slot_of(kn, thn, tau);
-      if (kn == k && sn == s) continue;
-      const double thc = slot_angle(kn, sn, tau);
-      const double xn = L_[kn].r * std::cos(thc), yn = L_[kn].r * std::sin(thc);
-      const double drop = y - yn, run = std::abs(x - xn);
-      if (drop > tan_g * run && yn < best_y) {
-        best_y = yn;
-        best_k = kn;
-        best_s = sn;
-      }
+      if (!rolls) break;
+      k = kn;
+      s = sn;
     }
-    if (best_k < 0) break;
-    occ(k, s) = -1;
-    k = best_k;
-    s = best_s;
+  };
+  roll();
+  // Still past the flight angle (the surface below is full): the surface flow
+  // carries it down to the toe, the first column against the rotation with
+  // room at a place its layer can hold.
+  if (past_flight_angle(k, s, tau)) {
+    double theta = slot_angle(k, s, tau);
+    const double step = L_[0].delta;
+    for (int i = 0; i < 2 * L_[0].S; ++i) {
+      theta -= step;
+      const int kk = ncol(theta, tau);
+      if (kk >= n_open_) continue;
+      const int ss = slot_of(kk, theta, tau);
+      if (past_flight_angle(kk, ss, tau)) continue;
+      k = kk;
+      s = ss;
+      break;
+    }
+    roll();
   }
   enter_slot(id, k, s, tau);
   const double th = slot_angle(k, s, tau);
@@ -978,35 +1046,107 @@ void LayerSim::deposit(int id, double theta, double tau, const V& v_land) {
   check_departure(k, s, tau);
 }
 
+bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out) {
+  const double tan_g = std::tan(gamma_);
+  const int id = occ(k, s);
+  const double th = slot_angle(k, s, tau);
+  const double c = std::cos(th), sn_th = std::sin(th);
+  const double x = L_[k].r * c, y = L_[k].r * sn_th;
+  const double fa = flight_angle(k);
+  const bool past = c > 0 && std::isfinite(fa) && sn_th > std::sin(fa);
+  // the angle-of-repose rule is the foot's: it acts on the toe side of the
+  // mill (the descending half); layers held by lifters do not roll
+  const bool repose = c < 0 && !L_[k].held;
+  bool found = false;
+  double best_y = y;
+  for (double dir : {-1.0, 1.0}) {
+    if (past && dir > 0) continue;  // past the flight angle: only down the rising side
+    const double thn = th + dir * L_[k].delta;
+    occ(k, s) = -1;  // the neighbouring column without this element
+    const int kn = ncol(thn, tau);
+    occ(k, s) = id;
+    if (kn >= n_open_) continue;
+    if (kn == 0 && k == 0 && !past) continue;  // on the liner the lifters hold it
+    const int sn = slot_of(kn, thn, tau);
+    if (kn == k && sn == s) continue;
+    const double thc = slot_angle(kn, sn, tau);
+    const double xn = L_[kn].r * std::cos(thc), yn = L_[kn].r * std::sin(thc);
+    const double drop = y - yn, run = std::abs(x - xn);
+    if ((past || (repose && drop > tan_g * run)) && yn < best_y) {
+      best_y = yn;
+      kn_out = kn;
+      sn_out = sn;
+      found = true;
+    }
+  }
+  // an overhang: the place one diameter straight below is empty; it falls
+  // onto the top of the column there (on the liner the lifters hold it)
+  if (k > 0 && !L_[k].held) {
+    const V q(x, y - d_);
+    const double rq = q.norm(), thq = fast_atan2(q.y(), q.x());
+    if (!inside_charge(q, rq, thq, tau)) {
+      const int kq = ncol(thq, tau);
+      if (kq < n_open_) {
+        const int sq = slot_of(kq, thq, tau);
+        const double thc = slot_angle(kq, sq, tau);
+        const double yq = L_[kq].r * std::sin(thc);
+        if (!(kq == k && sq == s) && yq < best_y - 0.25 * d_) {
+          kn_out = kq;
+          sn_out = sq;
+          found = true;
+        }
+      }
+    }
+  }
+  return found;
+}
+
+void LayerSim::relax_surface(double tau) {
+  // passes each way round the outer cells until nothing rolls (at most 6);
+  // in each column the top element rolls (on over as many columns as it
+  // must), then the next one, until the column is stable
+  const Layer& l0 = L_[0];
+  for (int pass = 0; pass < 6; ++pass) {
+    int moved = 0;
+    for (int q = 0; q < l0.S; ++q) {
+      const int s0 = pass % 2 == 0 ? q : l0.S - 1 - q;
+      const double th = slot_angle(0, s0, tau);
+      for (int top = 0; top < 32; ++top) {
+        const int h = ncol(th, tau);
+        if (h == 0) break;
+        int k = h - 1, s = slot_of(k, th, tau);
+        const int id = occ(k, s);
+        if (id < 0) break;
+        int kn, sn;
+        if (!roll_target(k, s, tau, kn, sn)) break;
+        ++moved;
+        // the mill lifted it to here since it entered; it settles lower
+        const double y0 = L_[k].r * std::sin(slot_angle(k, s, tau));
+        if (averaging_ && tau >= t_avg0_) energy_ += m_ * kGravity * (y0 - elem_y_entry_[id]);
+        leave_slot(id, k, s, tau);
+        place(id, kn, sn, tau);
+      }
+    }
+    if (moved == 0) break;
+  }
+}
+
 void LayerSim::check_departure(int j, int s, double tau) {
   const Layer& l = L_[j];
   if (!(l.omega > 0)) return;
   const double th = slot_angle(j, s, tau);
   // Where the layer cannot hold it (past its flight angle, where sin(theta)
-  // exceeds sin(flight angle)) it falls on at once: a cascade down the
-  // charge surface is a chain of such short flights.
+  // exceeds sin(flight angle)) it falls on at once. One that reaches its
+  // flight angle later is launched by departures(), which also looks one
+  // step back for elements placed after its scan.
   const double fa = flight_angle(j);
-  if (std::isfinite(fa) && std::sin(th) > std::sin(fa) + 1e-12) {
-    launch(j, s, tau, -1, true);
-    return;
-  }
-  // reaching its flight angle later in this step
-  int seg = -1;
-  double rel = l.release;
-  if (l.held) {
-    seg = canon_.surface.segment_of_angle(th - mill_angle(tau));
-    const HeldLaunch& h = held_[j][seg];
-    if (h.held) rel = h.released ? h.release : kInf;
-    else seg = -1;
-  }
-  if (!std::isfinite(rel)) return;
-  const double w = std::remainder(rel - th, kTwoPi);
-  if (w > 0 && w <= l.omega * (t_step1_ - tau)) launch(j, s, tau + w / l.omega, seg);
+  if (std::isfinite(fa) && std::sin(th) > std::sin(fa) + 1e-12) launch(j, s, tau, -1, true);
 }
 
 void LayerSim::support_sweep(double tau) {
   // An element whose cell below has emptied (the layers slip past each other)
   // falls into it: no element hangs over a void (docs/models/layer.md §Foot).
+  moved_.clear();
   for (int j = 1; j < n_open_; ++j) {
     const Layer& l = L_[j];
     for (int s = 0; s < l.S; ++s) {
@@ -1023,9 +1163,17 @@ void LayerSim::support_sweep(double tau) {
       if (k != j) {
         leave_slot(id, j, s, tau);
         enter_slot(id, k, sk, tau);
-        check_departure(k, sk, tau);
+        moved_.push_back(id);
       }
     }
+  }
+  // those that fell past the flight angle of their new layer settle (after
+  // the sweep, so that each starts from its own cell)
+  for (const int id : moved_) {
+    const int k = elem_layer_[id], sl = elem_slot_[id];
+    if (k < 0 || !past_flight_angle(k, sl, tau)) continue;
+    leave_slot(id, k, sl, tau);
+    place(id, k, sl, tau);
   }
 }
 
@@ -1121,7 +1269,7 @@ void LayerSim::sample(double tau, double w) {
   // are integrated exactly as they leave their slots: leave_slot())
   const double cell_w = d_ * d_ * w, mass_w = m_ * w;
   for (const Flight& f : flights_) {
-    const V q = canon_.physical_point(flight_position(f, tau));
+    const V q = flight_position(f, tau);  // canonical frame (the indicators are mirrored at the end)
     const int j = occupancy_->ring(q.norm());
     occupancy_->add_to_bin(j, occupancy_->angular_bin(j, wrap2pi(fast_atan2(q.y(), q.x()))), cell_w, mass_w);
   }
@@ -1161,11 +1309,12 @@ void LayerSim::sample(double tau, double w) {
     acc_S_[e] += S * w;
     acc_NV_[e] += N * vslip * w;
     acc_SV_[e] += S * vslip * w;
-    if (canon_.surface.element_segment[e] == 0) f_lifter += F;
+    if (canon_.surface.element_segment[e] == canon_.segment_of_physical_0) f_lifter += F;
   }
   // forces on lifter 0 against its angular position (thesis Figs. 4-21/4-22)
-  const V er0(cr, sr), et0(-sr, cr);
-  const double lifter_phys = wrap2pi(canon_.physical_angle(rot));
+  const double lifter_angle = rot + canon_.segment_of_physical_0 * canon_.surface.segment_angle_rad();
+  const V er0(std::cos(lifter_angle), std::sin(lifter_angle)), et0(-er0.y(), er0.x());
+  const double lifter_phys = wrap2pi(canon_.physical_angle(lifter_angle));
   const int nb = static_cast<int>(lifter_n_.size());
   const int b = std::clamp(static_cast<int>(lifter_phys / kTwoPi * nb), 0, nb - 1);
   lifter_n_[b] += f_lifter.dot(er0);
@@ -1176,6 +1325,7 @@ void LayerSim::sample(double tau, double w) {
 void LayerSim::snapshot(double tau) {
   ChargeSnapshot sn;
   sn.time_s = tau;
+  sn.liner_angle_rad = in_.mill.sense() * omega_ * tau;
   for (int j = 0; j < n_open_; ++j)
     for (int s = 0; s < L_[j].S; ++s) {
       if (occ(j, s) < 0) continue;
@@ -1226,7 +1376,9 @@ ChargeResult LayerSim::run() {
   lifter_cnt_.assign(180, 0);
   layer_count_acc_.assign(L_.size(), 0.0);
   traj_count_.assign(L_.size(), 0);
-  occupancy_ = std::make_unique<ChargeOccupancy>(R_eff_, d_, in_.mill.sense());
+  // occupancy in the canonical (anticlockwise) frame; the angles are mirrored
+  // at the end for a clockwise mill, so that its results are the exact mirror
+  occupancy_ = std::make_unique<ChargeOccupancy>(R_eff_, d_, +1.0);
   ring_is_layer_ = occupancy_->n_rings() >= n_open_;
   for (int j = 0; j < n_open_ && ring_is_layer_; ++j) ring_is_layer_ = occupancy_->n_angular(j) == L_[j].S;
   col_.assign(L_[0].S, 0);
@@ -1251,21 +1403,19 @@ ChargeResult LayerSim::run() {
     snap_dt_ = T_rev / snaps_left_;
     next_snap_ = t_end_ - T_rev + 0.5 * snap_dt_;
   }
-  // support sweep interval: layers drift apart by under a quarter slot in between
-  double max_dw = 0;
-  for (int j = 1; j < n_open_; ++j) max_dw = std::max(max_dw, std::abs(L_[j - 1].omega - L_[j].omega));
-  const double min_delta = L_[0].delta;
-  const long long sweep_every =
-      max_dw > 0 ? std::max<long long>(1, static_cast<long long>(0.25 * min_delta / (max_dw * dt_))) : 1000000;
+  // Support sweep and surface relaxation (foot stability) run on a fixed
+  // schedule in time, every half the time the shell takes to move one outer
+  // cell, whatever the step; loads, flights' occupancy and the column map are
+  // sampled every two degrees of mill rotation (a quadrature of the time
+  // averages). Both are independent of the time step (docs/models/layer.md
+  // §Time step).
+  const double relax_dt = 0.5 * L_[0].delta / omega_;
+  const double sample_dt = (2.0 * kPi / 180.0) / omega_;
   // flight skips: at most two outer cells' worth of rotation; the column
-  // window must cover the rotation over a step plus a skip
-  double w_max = omega_;
+  // window must cover the rotation over a sampling interval plus a skip
+  const double w_max = omega_;
   skip_H_ = 2.0 * L_[0].delta / w_max;
-  // loads, flights' occupancy and the column map are sampled every
-  // sample_every steps, about every two degrees of mill rotation (a quadrature of
-  // the time averages; docs/models/layer.md §Time step)
-  const long long sample_every = std::max<long long>(1, std::llround((2.0 * kPi / 180.0) / (omega_ * dt_)));
-  col_m_ = static_cast<int>(std::ceil(w_max * (sample_every * dt_ + 2.0 * skip_H_) / L_[0].delta)) + 1;
+  col_m_ = static_cast<int>(std::ceil(w_max * (sample_dt + dt_ + 2.0 * skip_H_) / L_[0].delta)) + 1;
   t_step0_ = 0;
   update_columns(0.0);
   for (long long k = 0; k < n_steps; ++k) {
@@ -1278,8 +1428,11 @@ ChargeResult LayerSim::run() {
     // advance the layers to t1
     for (int j = 0; j < n_open_; ++j) L_[j].phase = wrap2pi(L_[j].phase + L_[j].omega * dt_);
     t_step0_ = t1;
-    if ((k + 1) % sweep_every == 0) support_sweep(t1);
-    if ((k + 1) % sample_every == 0 || k + 1 == n_steps) {
+    if (std::floor(t1 / relax_dt) > std::floor(t0 / relax_dt)) {
+      support_sweep(t1);
+      relax_surface(t1);
+    }
+    if (std::floor(t1 / sample_dt) > std::floor(t0 / sample_dt) || k + 1 == n_steps) {
       update_columns(t1);
       if (averaging_) {
         const double w = t1 - std::max(t_last_sample_, t_avg0_);
@@ -1313,9 +1466,14 @@ ChargeResult LayerSim::run() {
   res.model = "layer";
   Indicators& I = res.indicators;
   const OccupancyIndicators oc = occupancy_->evaluate();
-  I.toe_deg = oc.toe_deg;
-  I.shoulder_deg = oc.shoulder_deg;
-  I.com_angle_deg = oc.com_angle_deg;
+  auto phys_deg = [&](double deg) {
+    double d = canon_.physical_angle(deg * kPi / 180.0) * 180.0 / kPi;
+    d = std::fmod(d, 360.0);
+    return d < 0 ? d + 360.0 : d;
+  };
+  I.toe_deg = phys_deg(oc.toe_deg);
+  I.shoulder_deg = phys_deg(oc.shoulder_deg);
+  I.com_angle_deg = phys_deg(oc.com_angle_deg);
   I.com_radius_m = oc.com_radius_m;
   I.charge_area_m2 = oc.charge_area_m2;
   I.n_layers = oc.n_layers;
@@ -1333,27 +1491,32 @@ ChargeResult LayerSim::run() {
         if (o.occupancy(j, i) >= oc.threshold) continue;
         const double rc = o.ring_mid_radius(j), tc = (i + 0.5) * kTwoPi / o.n_angular(j);
         if (rc * std::sin(tc) > y_pool_) continue;
-        // physical frame x; the sense of rotation decides the sign of the torque
-        pool_w_per_m += omega_ * kGravity * rho_pulp_ * o.bin_area(j) * rc * std::cos(tc) * in_.mill.sense();
+        // canonical frame: x > 0 on the rising side, where the pool would resist
+        pool_w_per_m += omega_ * kGravity * rho_pulp_ * o.bin_area(j) * rc * std::cos(tc);
       }
   }
-  const double net_w_per_m = (avg_time_ > 0 ? energy_ / avg_time_ : 0.0) + pool_w_per_m;
-  I.net_power_w_per_m = net_w_per_m;
-  I.net_power_kw = net_w_per_m * L / 1000.0;
-  I.slurry_pool_power_kw = pool_w_per_m * L / 1000.0;
+  // Net power (thesis eq. 4.1): the charge by its torque arm (eq. 4.3), as the
+  // thesis' simulator, plus the slurry pool (eq. 4.4), from the time-averaged
+  // mass of the en-masse bins at their centres. The second figure is the rate
+  // of lift and kinetic energy given to the elements that leave the charge:
+  // Morrell's energy reading of his C-model (reference §1).
+  double arm_w_per_m = 0;
   {
-    // torque-arm power of the en-masse charge (thesis eq. 4.3): omega g sum m x,
-    // from the time-averaged mass of the en-masse bins at their centres
     const ChargeOccupancy& o = *occupancy_;
-    double arm = 0;
+    double arm = 0;  // [kg m / m] sum m x of the en-masse charge, physical frame
     for (int j = 0; j < o.n_rings(); ++j)
       for (int i = 0; i < o.n_angular(j); ++i) {
         if (o.occupancy(j, i) < oc.threshold) continue;
         const double tc = (i + 0.5) * kTwoPi / o.n_angular(j);
         arm += o.mass(j, i) * o.ring_mid_radius(j) * std::cos(tc);
       }
-    I.alt_net_power_kw = omega_ * kGravity * arm * in_.mill.sense() * L / 1000.0 + I.slurry_pool_power_kw;
+    arm_w_per_m = omega_ * kGravity * arm;
   }
+  const double net_w_per_m = arm_w_per_m + pool_w_per_m;
+  I.net_power_w_per_m = net_w_per_m;
+  I.net_power_kw = net_w_per_m * L / 1000.0;
+  I.slurry_pool_power_kw = pool_w_per_m * L / 1000.0;
+  I.alt_net_power_kw = ((avg_time_ > 0 ? energy_ / avg_time_ : 0.0) + pool_w_per_m) * L / 1000.0;
   I.no_load_power_kw = morrell_no_load_power_kw(2 * R_eff_, phi_, L, in_.charge.cone_length_m);
   I.gross_power_kw = I.no_load_power_kw + I.net_power_kw;
   // layers, trajectories, speeds
@@ -1400,6 +1563,7 @@ ChargeResult LayerSim::run() {
   st.substeps = substeps_;
   st.elements = N_;
   st.flights = n_flights_;
+  st.charge_mass_kg_per_m = N_ * m_;
   return res;
 }
 

@@ -78,14 +78,14 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
   t.n_bins = n;
   t.bin_rad = kTwoPi / n;
   t.inv_bin = n / kTwoPi;
-  t.ride_radius_m.assign(n, std::numeric_limits<double>::infinity());
-  t.support_element.assign(n, -1);
-  t.cos_c.resize(n);
-  t.sin_c.resize(n);
+  t.edge_radius_m.assign(n, std::numeric_limits<double>::infinity());
+  std::vector<int> edge_element(n, -1);
+  t.cos_e.resize(n);
+  t.sin_e.resize(n);
   for (int b = 0; b < n; ++b) {
-    const double c = (b + 0.5) * t.bin_rad;
-    t.cos_c[b] = std::cos(c);
-    t.sin_c[b] = std::sin(c);
+    const double c = b * t.bin_rad;
+    t.cos_e[b] = std::cos(c);
+    t.sin_e[b] = std::sin(c);
   }
   // Each element's capsule covers a short arc of angles: its endpoints' angles
   // widened by the angle the disc subtends at its nearest point.
@@ -100,18 +100,27 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
     dp = std::remainder(dp, kTwoPi);
     const double lo = (dp >= 0 ? pa : pa + dp) - widen;
     const double span = std::abs(dp) + 2.0 * widen;
-    const int b0 = static_cast<int>(std::floor((lo) * t.inv_bin - 0.5));
+    const int b0 = static_cast<int>(std::floor(lo * t.inv_bin)) - 1;
     const int nb = static_cast<int>(std::ceil(span * t.inv_bin)) + 2;
     for (int k = 0; k <= nb; ++k) {
       int b = (b0 + k) % n;
       if (b < 0) b += n;
-      const V u(t.cos_c[b], t.sin_c[b]);
+      const V u(t.cos_e[b], t.sin_e[b]);
       const double r = ray_capsule_entry(u, A, B, a);
-      if (r < t.ride_radius_m[b]) {
-        t.ride_radius_m[b] = r;
-        t.support_element[b] = e;
+      if (r < t.edge_radius_m[b]) {
+        t.edge_radius_m[b] = r;
+        edge_element[b] = e;
       }
     }
+  }
+  // a bin keeps the smaller of its edges, and the element touched there
+  t.ride_radius_m.resize(n);
+  t.support_element.resize(n);
+  for (int b = 0; b < n; ++b) {
+    const int b1 = b + 1 == n ? 0 : b + 1;
+    const bool left = t.edge_radius_m[b] <= t.edge_radius_m[b1];
+    t.ride_radius_m[b] = left ? t.edge_radius_m[b] : t.edge_radius_m[b1];
+    t.support_element[b] = left ? edge_element[b] : edge_element[b1];
   }
   t.block_min_ride_m.assign((n + LinerRideTable::kBlock - 1) / LinerRideTable::kBlock,
                             std::numeric_limits<double>::infinity());
@@ -143,7 +152,7 @@ bool first_ride_crossing(const LinerRideTable& t, double rot, const V& p0, const
   double lw = lo < 0 ? lo + kTwoPi : lo;
   if (lw >= kTwoPi) lw -= kTwoPi;
   if (lw < 0 || lw >= kTwoPi) lw = wrap_2pi(lw);
-  const int b0 = static_cast<int>(lw * t.inv_bin - 0.5) - 1;
+  const int b0 = static_cast<int>(lw * t.inv_bin) - 1;
   const int nb = static_cast<int>(std::ceil(std::abs(d) * t.inv_bin)) + 3;
   const double c = std::cos(rot), s = std::sin(rot);
   // quick reject: the arc stays inside the smallest ride radius of the bins it spans
@@ -199,7 +208,7 @@ bool first_ride_crossing(const LinerRideTable& t, double rot, const V& p0, const
       const double u = l2 > 0 ? (p - q1).dot(e) / l2 : 0;
       if (u < -1e-9 || u > 1 + 1e-9) continue;
       best = r;
-      bin_hit = u < 0.5 ? b : b1;
+      bin_hit = b;
       found = true;
     }
   }

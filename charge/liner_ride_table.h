@@ -8,8 +8,11 @@
 // where flights land at real-time speed (docs/models/layer.md §Geometry).
 //
 // Frame: the liner frame of the surface (mill frame at t = 0), angles
-// anticlockwise from +x. Bin b covers [b h, (b + 1) h), h = 2 pi / n_bins,
-// and stores the value at its centre; the ride polyline joins the bin centres.
+// anticlockwise from +x. Bin b covers [b h, (b + 1) h), h = 2 pi / n_bins.
+// The ride radius is computed exactly at the bin edges; a bin stores the
+// smaller of its two edges (so a disc placed anywhere in the bin at that
+// radius does not overlap the liner where the profile is monotone over the
+// bin), and the ride polyline used for crossings joins the edge points.
 #pragma once
 
 #include <vector>
@@ -25,9 +28,10 @@ struct LinerRideTable {
   int n_bins = 0;
   double bin_rad = 0;                // [rad] h
   double inv_bin = 0;                // [1/rad]
-  std::vector<double> ride_radius_m; // [m] per bin
+  std::vector<double> ride_radius_m; // [m] per bin: the smaller of its edges
   std::vector<int> support_element;  // surface element touched, per bin
-  std::vector<double> cos_c, sin_c;  // direction of each bin centre
+  std::vector<double> edge_radius_m; // [m] exact ride radius at the edge angle b h
+  std::vector<double> cos_e, sin_e;  // direction of each edge
   double min_ride_m = 0;             // [m] smallest ride radius (over lifter tops)
   double max_ride_m = 0;             // [m] largest ride radius (deepest pocket)
   static constexpr int kBlock = 16;  // bins per block of block_min_ride_m
@@ -37,8 +41,8 @@ struct LinerRideTable {
   int bin(double psi) const;
   double ride(double psi) const { return ride_radius_m[bin(psi)]; }
   int support(double psi) const { return support_element[bin(psi)]; }
-  /// Ride point of bin b (liner frame) [m].
-  Eigen::Vector2d point(int b) const { return ride_radius_m[b] * Eigen::Vector2d(cos_c[b], sin_c[b]); }
+  /// Ride point at edge b (liner frame) [m].
+  Eigen::Vector2d point(int b) const { return edge_radius_m[b] * Eigen::Vector2d(cos_e[b], sin_e[b]); }
 };
 
 /// Builds the table for discs of radius `disc_radius_m` with about
