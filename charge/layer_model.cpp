@@ -136,6 +136,19 @@ class LayerSim {
     int s = static_cast<int>(u * l.inv_delta);
     return s >= l.S ? s - l.S : (s < 0 ? 0 : s);
   }
+  /// Direction (cos, sin) of slot s of layer j at time tau, from per-layer
+  /// tables and a cached direction of the layer's phase (no trig per call).
+  void slot_dir(int j, int s, double tau, double& c, double& sn) const {
+    if (dir_tau_[j] != tau) {
+      const double ph = L_[j].phase + L_[j].omega * (tau - t_step0_);
+      dir_c_[j] = std::cos(ph);
+      dir_s_[j] = std::sin(ph);
+      dir_tau_[j] = tau;
+    }
+    const double cs = slot_cos_[L_[j].offset + s], ss = slot_sin_[L_[j].offset + s];
+    c = dir_c_[j] * cs - dir_s_[j] * ss;
+    sn = dir_s_[j] * cs + dir_c_[j] * ss;
+  }
   int& occ(int j, int s) { return occ_[L_[j].offset + s]; }
   int occ(int j, int s) const { return occ_[L_[j].offset + s]; }
   /// Top of the charge column at angle theta at time tau: the layer just
@@ -232,6 +245,10 @@ class LayerSim {
   std::vector<std::vector<HeldLaunch>> held_;  // [held layer][segment]
   int n_held_layers_ = 0;
   std::vector<int> occ_;                    // element id per slot, -1 empty
+  std::vector<double> slot_cos_, slot_sin_; // cos, sin of s delta_j per slot
+  mutable std::vector<double> dir_tau_, dir_c_, dir_s_;  // cache of slot_dir(): the phase direction at dir_tau_
+  std::vector<double> sin_fa_;              // sin of each layer's flight angle (+inf: never)
+  double tan_g_ = 0;                        // tan of the angle of repose
   std::vector<int> elem_layer_, elem_slot_; // -1 when flying
   std::vector<double> elem_y_entry_;        // [m] height where it last entered the charge
   std::vector<double> elem_t_slot_;         // [s] since when it sits in its slot
@@ -360,6 +377,16 @@ void LayerSim::setup_layers() {
     off += l.S;
   }
   occ_.assign(off, -1);
+  slot_cos_.resize(off);
+  slot_sin_.resize(off);
+  for (int j = 0; j < nl; ++j)
+    for (int q = 0; q < L_[j].S; ++q) {
+      slot_cos_[L_[j].offset + q] = std::cos(q * L_[j].delta);
+      slot_sin_[L_[j].offset + q] = std::sin(q * L_[j].delta);
+    }
+  dir_tau_.assign(nl, std::numeric_limits<double>::quiet_NaN());
+  dir_c_.assign(nl, 1.0);
+  dir_s_.assign(nl, 0.0);
   phase0_.assign(nl, 0.0);
   z_ = std::pow(1.0 - J_, 0.4532);
   const double Nm = in_.mill.speed_rpm / 60.0;
@@ -436,6 +463,12 @@ void LayerSim::setup_layers() {
   if (capacity() < N_) throw SimulationError("layer model: the charge does not fit inside the mill");
   m_ = rho_c_ * J_ * metrics_.free_area_m2 / N_;
   if (centrifuged) notes_.push_back(fmt::format("the mill runs at {:.3f} of critical, beyond Morrell's phi_c = {:.3f}: the charge centrifuges", phi_, phi_c));
+  sin_fa_.resize(nl);
+  for (int j = 0; j < nl; ++j) {
+    const double fa = flight_angle(j);
+    sin_fa_[j] = std::isfinite(fa) ? std::sin(fa) : kInf;
+  }
+  tan_g_ = std::tan(gamma_);
 }
 
 void LayerSim::setup_flight_angles() {
@@ -998,9 +1031,9 @@ void LayerSim::deposit(int id, double theta, double tau, const V& v_land) {
 }
 
 bool LayerSim::past_flight_angle(int k, int s, double tau) const {
-  const double th = slot_angle(k, s, tau);
-  const double fa = flight_angle(k);
-  return std::cos(th) > 0 && std::isfinite(fa) && std::sin(th) > std::sin(fa);
+  double c, sn;
+  slot_dir(k, s, tau, c, sn);
+  return c > 0 && sn > sin_fa_[k];
 }
 
 void LayerSim::place(int id, int k, int s, double tau) {
@@ -1040,23 +1073,24 @@ void LayerSim::place(int id, int k, int s, double tau) {
     roll();
   }
   enter_slot(id, k, s, tau);
-  const double th = slot_angle(k, s, tau);
-  elem_y_entry_[id] = L_[k].r * std::sin(th);
+  double cf, sf;
+  slot_dir(k, s, tau, cf, sf);
+  elem_y_entry_[id] = L_[k].r * sf;
   deepest_ = std::max(deepest_, k);
   check_departure(k, s, tau);
 }
 
 bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out) {
-  const double tan_g = std::tan(gamma_);
   const int id = occ(k, s);
   const double th = slot_angle(k, s, tau);
-  const double c = std::cos(th), sn_th = std::sin(th);
+  double c, sn_th;
+  slot_dir(k, s, tau, c, sn_th);
   const double x = L_[k].r * c, y = L_[k].r * sn_th;
-  const double fa = flight_angle(k);
-  const bool past = c > 0 && std::isfinite(fa) && sn_th > std::sin(fa);
+  const bool past = c > 0 && sn_th > sin_fa_[k];
   // the angle-of-repose rule is the foot's: it acts on the toe side of the
   // mill (the descending half); layers held by lifters do not roll
   const bool repose = c < 0 && !L_[k].held;
+  if (!past && !repose && (k == 0 || L_[k].held)) return false;  // nothing can move it
   bool found = false;
   double best_y = y;
   for (double dir : {-1.0, 1.0}) {
@@ -1069,10 +1103,11 @@ bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out) {
     if (kn == 0 && k == 0 && !past) continue;  // on the liner the lifters hold it
     const int sn = slot_of(kn, thn, tau);
     if (kn == k && sn == s) continue;
-    const double thc = slot_angle(kn, sn, tau);
-    const double xn = L_[kn].r * std::cos(thc), yn = L_[kn].r * std::sin(thc);
+    double cn, snn;
+    slot_dir(kn, sn, tau, cn, snn);
+    const double xn = L_[kn].r * cn, yn = L_[kn].r * snn;
     const double drop = y - yn, run = std::abs(x - xn);
-    if ((past || (repose && drop > tan_g * run)) && yn < best_y) {
+    if ((past || (repose && drop > tan_g_ * run)) && yn < best_y) {
       best_y = yn;
       kn_out = kn;
       sn_out = sn;
@@ -1088,8 +1123,9 @@ bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out) {
       const int kq = ncol(thq, tau);
       if (kq < n_open_) {
         const int sq = slot_of(kq, thq, tau);
-        const double thc = slot_angle(kq, sq, tau);
-        const double yq = L_[kq].r * std::sin(thc);
+        double cq, sq_th;
+        slot_dir(kq, sq, tau, cq, sq_th);
+        const double yq = L_[kq].r * sq_th;
         if (!(kq == k && sq == s) && yq < best_y - 0.25 * d_) {
           kn_out = kq;
           sn_out = sq;
@@ -1121,7 +1157,9 @@ void LayerSim::relax_surface(double tau) {
         if (!roll_target(k, s, tau, kn, sn)) break;
         ++moved;
         // the mill lifted it to here since it entered; it settles lower
-        const double y0 = L_[k].r * std::sin(slot_angle(k, s, tau));
+        double c0, s0y;
+        slot_dir(k, s, tau, c0, s0y);
+        const double y0 = L_[k].r * s0y;
         if (averaging_ && tau >= t_avg0_) energy_ += m_ * kGravity * (y0 - elem_y_entry_[id]);
         leave_slot(id, k, s, tau);
         place(id, kn, sn, tau);
@@ -1134,13 +1172,13 @@ void LayerSim::relax_surface(double tau) {
 void LayerSim::check_departure(int j, int s, double tau) {
   const Layer& l = L_[j];
   if (!(l.omega > 0)) return;
-  const double th = slot_angle(j, s, tau);
   // Where the layer cannot hold it (past its flight angle, where sin(theta)
   // exceeds sin(flight angle)) it falls on at once. One that reaches its
   // flight angle later is launched by departures(), which also looks one
   // step back for elements placed after its scan.
-  const double fa = flight_angle(j);
-  if (std::isfinite(fa) && std::sin(th) > std::sin(fa) + 1e-12) launch(j, s, tau, -1, true);
+  double c, sn;
+  slot_dir(j, s, tau, c, sn);
+  if (sn > sin_fa_[j] + 1e-12) launch(j, s, tau, -1, true);
 }
 
 void LayerSim::support_sweep(double tau) {
@@ -1430,6 +1468,7 @@ ChargeResult LayerSim::run() {
     t_step0_ = t1;
     if (std::floor(t1 / relax_dt) > std::floor(t0 / relax_dt)) {
       support_sweep(t1);
+      update_columns(t1);  // fresh column tops for the relaxation
       relax_surface(t1);
     }
     if (std::floor(t1 / sample_dt) > std::floor(t0 / sample_dt) || k + 1 == n_steps) {
