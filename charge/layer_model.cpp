@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <random>
@@ -18,6 +19,7 @@
 #include "charge/liner_ride_table.h"
 #include "charge/morrell_c_model.h"
 #include "charge/slip_model.h"
+#include "charge/slot_map.h"
 #include "charge/slurry_drag.h"
 #include "geometry/errors.h"
 #include "geometry/metrics.h"
@@ -181,6 +183,12 @@ class LayerSim {
   /// Polar angle beyond which layer j cannot carry an element (its flight angle).
   double flight_angle(int j) const { return std::min(L_[j].release, L_[j].rel_min); }
   void check_flights(double t1);
+  /// The time up to which check_flight() has nothing to do for f: it
+  /// returns false for every t1 <= wake_time(f).
+  static double wake_time(const Flight& f) {
+    if (f.landed) return std::nextafter(f.landing.t, -kInf);
+    return std::max(f.t_next, f.t0);
+  }
   bool check_flight(Flight& f, double t1, Landing& out);
   bool check_flight_drag(Flight& f, double t1, Landing& out);
   /// First crossing into the liner over (tau, tb] of the path through pa with
@@ -193,6 +201,11 @@ class LayerSim {
   /// Puts element `id`, which is in no slot, at (k, s) at time tau and lets
   /// it settle by the foot-stability rules.
   void place(int id, int k, int s, double tau);
+  /// From theta, steps against the rotation (one outer cell at a time) to
+  /// the first column with room below n_open (and, with `holdable`, whose
+  /// top cell its layer can hold); theta and k_out are that column's angle
+  /// and top. False if there is none.
+  bool toe_ward_room(double& theta, double tau, bool holdable, int& k_out) const;
   /// The slot is on the rising side beyond the flight angle of its layer.
   bool past_flight_angle(int k, int s, double tau) const;
   /// An element just placed in slot s of layer j at time tau: if it is past
@@ -212,8 +225,38 @@ class LayerSim {
   /// Whether the element at (k, s) at tau would roll, and where: the top
   /// cell (kn, sn) of the steepest-descent neighbouring column.
   bool roll_target(int k, int s, double tau, int& kn_out, int& sn_out);
-  /// Column heights round the outer layer and their window maxima, at tau.
-  void update_columns(double tau);
+  /// Whether the top of the column above outer cell s may roll at tau (a
+  /// conservative filter for relax_surface(), from the column map).
+  bool relax_candidate(int s, double tau) const;
+  /// Column heights round the outer layer at tau, and with `window` their
+  /// window maxima for the flights' clearance (bed_clearance()).
+  void update_columns(double tau, bool window);
+  /// Cell k of layer j was entered (or left) at tau: marks the columns of
+  /// the map and the slots of the support sweep that may change.
+  void note_cell(int j, int k, double tau, bool entered);
+  void mark_col(int s) {
+    if (!col_dirty_[s]) {
+      col_dirty_[s] = 1;
+      col_dirty_list_.push_back(s);
+    }
+  }
+  void mark_sup(int j, int s) {
+    char& b = sup_dirty_[L_[j].offset + s];
+    if (!b) {
+      b = 1;
+      sup_dirty_list_[j].push_back(s);
+    }
+  }
+  /// Offset b of the SlotMap from the outer layer to layer j at tau.
+  double colmap_offset(int j, double tau) const {
+    return wrap2pi(slot_angle(0, 0, tau) - slot_angle(j, 0, tau)) * L_[j].inv_delta + 0.5;
+  }
+  /// Offset b of the SlotMap from layer j to layer j - 1 at tau.
+  double supmap_offset(int j, double tau) const {
+    return wrap2pi(slot_angle(j, 0, tau) - slot_angle(j - 1, 0, tau)) * L_[j - 1].inv_delta + 0.5;
+  }
+  /// out[s] = max (or min) of v over s - m .. s + m, circularly.
+  void window_extreme(const std::vector<int>& v, int m, bool max, std::vector<int>& out);
   /// A lower bound [m] on the distance from (r, theta) at time tau to any cell
   /// the charge can occupy before tau + skip_H_ (from the column map).
   double bed_clearance(double r, double theta, double tau) const;
@@ -254,6 +297,7 @@ class LayerSim {
   std::vector<double> elem_t_slot_;         // [s] since when it sits in its slot
   std::vector<double> phase0_;              // [rad] phase of each layer at t = 0 (the phase is phase0 + omega t)
   std::vector<Flight> flights_;
+  std::vector<double> flight_wake_;         // [s] per flight: check_flight() has nothing to do while t1 <= this
   std::vector<Landing> landings_;
   std::vector<DepartureEvent> dep_events_;
   std::vector<int> gone_;
@@ -281,10 +325,26 @@ class LayerSim {
   bool ring_is_layer_ = false;              // occupancy rings coincide with the layers, bins with slots
   std::vector<int> col_;                    // column height above each outer slot, at t_map_
   std::vector<int> colwin_;                 // max column height over outer slots s-m .. s+m
-  std::vector<int> win_pre_, win_suf_;      // scratch of the window maxima
+  std::vector<int> win_pre_, win_suf_, win_val_;  // scratch of the window maxima
   std::vector<int> active_;                 // scratch: outer slots whose column is still growing
+  std::vector<char> relax_cur_, relax_next_;  // scratch of relax_surface(): columns to visit
+  // incremental maps (docs/models/layer.md §Incremental maps)
+  std::vector<SlotMap> colmap_;             // [j] outer layer -> layer j
+  std::vector<SlotMap> supmap_;             // [j] layer j -> layer j - 1
+  std::vector<double> colmap_b_;            // offsets of colmap_ at t_map_
+  std::vector<double> supmap_b_;            // offsets of supmap_ at t_sup_
+  double t_sup_ = 0;                        // [s] time of the last support sweep
+  bool maps_ready_ = false;                 // changes are noted from the start of the run
+  bool col_full_ = true, sup_full_ = true;  // the next map / sweep is a full one
+  std::vector<char> col_dirty_;             // per outer slot
+  std::vector<int> col_dirty_list_;
+  std::vector<char> sup_dirty_;             // per slot (occ_ indexing)
+  std::vector<std::vector<int>> sup_dirty_list_;  // [layer] slots to check
+  std::vector<int> colmin_;                 // scratch of relax_surface(): window minima of col_
+  int relax_reach_ = 3;                     // [outer cells] how far a move can change what roll_target() sees
   int col_m_ = 1;                           // half-width m of that window [slots]
-  double t_map_ = 0;                        // [s] time of the column map
+  double t_map_ = 0;                        // [s] time of the column map col_
+  double t_win_ = 0;                        // [s] time of its window maxima colwin_
   double t_last_sample_ = 0;                // [s]
   double skip_H_ = 0;                       // [s] longest skip of a flight past the charge
   double r_open_min_ = 0;                   // [m] no element is ever inside this radius
@@ -597,6 +657,7 @@ void LayerSim::setup_initial_fill() {
 
 void LayerSim::enter_slot(int id, int j, int s, double tau) {
   occ(j, s) = id;
+  note_cell(j, s, tau, true);
   elem_layer_[id] = j;
   elem_slot_[id] = s;
   elem_t_slot_[id] = tau;
@@ -604,6 +665,7 @@ void LayerSim::enter_slot(int id, int j, int s, double tau) {
 
 void LayerSim::leave_slot(int id, int j, int s, double tau) {
   occ(j, s) = -1;
+  note_cell(j, s, tau, false);
   elem_layer_[id] = -1;
   elem_slot_[id] = -1;
   const double ta = std::max(elem_t_slot_[id], t_avg0_), tb = std::min(tau, t_end_);
@@ -671,6 +733,7 @@ void LayerSim::launch(int j, int s, double tau, int seg, bool relaunch) {
     energy_ += m_ * (kGravity * (f.p0.y() - elem_y_entry_[id]) + 0.5 * f.v0.squaredNorm());
   ++n_flights_;
   flights_.push_back(f);
+  flight_wake_.push_back(wake_time(f));
 }
 
 void LayerSim::departures(double t0, double t1) {
@@ -897,8 +960,11 @@ bool LayerSim::check_flight_drag(Flight& f, double t1, Landing& out) {
 void LayerSim::check_flights(double t1) {
   landings_.clear();
   for (int i = 0; i < static_cast<int>(flights_.size()); ++i) {
+    if (t1 <= flight_wake_[i]) continue;  // nothing to do before t1 (a compact array, no call)
     Landing l;
-    if (check_flight(flights_[i], t1, l)) {
+    const bool lands = check_flight(flights_[i], t1, l);
+    flight_wake_[i] = wake_time(flights_[i]);
+    if (lands) {
       l.flight = i;
       landings_.push_back(l);
     }
@@ -967,8 +1033,12 @@ void LayerSim::check_flights(double t1) {
   for (const Landing& l : landings_) gone_.push_back(l.flight);
   std::sort(gone_.begin(), gone_.end(), std::greater<int>());
   for (const int i : gone_) {
-    if (i != static_cast<int>(flights_.size()) - 1) flights_[i] = flights_.back();
+    if (i != static_cast<int>(flights_.size()) - 1) {
+      flights_[i] = flights_.back();
+      flight_wake_[i] = flight_wake_.back();
+    }
     flights_.pop_back();
+    flight_wake_.pop_back();
   }
 }
 
@@ -982,12 +1052,7 @@ void LayerSim::deposit(int id, double theta, double tau, const V& v_land) {
   if (k >= n_open_) {
     // No room inside the allowed layers (version 1.2: inside r_i): the
     // element is moved towards the toe, against the rotation (thesis §4.6.2).
-    const double step = L_[0].delta;
-    for (int i = 0; i < 2 * L_[0].S && k >= n_open_; ++i) {
-      theta -= step;
-      k = ncol(theta, tau);
-    }
-    if (k >= n_open_) throw SimulationError("layer model: no room left for a landing element");
+    if (!toe_ward_room(theta, tau, false, k)) throw SimulationError("layer model: no room left for a landing element");
   }
   // Foot stability, 1: momentum (thesis §4.4.2, Radziszewski 1998). The
   // element keeps the part of its velocity along the charge surface relative
@@ -1030,6 +1095,40 @@ void LayerSim::deposit(int id, double theta, double tau, const V& v_land) {
   place(id, k, slot_of(k, theta, tau), tau);
 }
 
+bool LayerSim::toe_ward_room(double& theta, double tau, bool holdable, int& k_out) const {
+  // Steps of one outer cell against the rotation, up to two turns. A column
+  // is full when its top is at n_open: with the map's hint full (n_open) that
+  // is so exactly when the cell of the innermost layer is occupied (ncol()
+  // walks down from the hint), which is checked with running slot
+  // coordinates, without ncol()'s trigonometry.
+  const Layer& l0 = L_[0];
+  const Layer& lin = L_[n_open_ - 1];
+  const double step = l0.delta;
+  double u0 = wrap2pi(theta - (l0.phase + l0.omega * (t_map_ - t_step0_)) + 0.5 * l0.delta);
+  double ui = wrap2pi(theta - (lin.phase + lin.omega * (tau - t_step0_)) + 0.5 * lin.delta);
+  const int* oi = &occ_[lin.offset];
+  for (int i = 0; i < 2 * l0.S; ++i) {
+    theta -= step;
+    u0 -= step;
+    if (u0 < 0) u0 += kTwoPi;
+    ui -= step;
+    if (ui < 0) ui += kTwoPi;
+    int s0 = static_cast<int>(u0 * l0.inv_delta);
+    if (s0 >= l0.S) s0 = l0.S - 1;
+    if (col_[s0] >= n_open_) {
+      int si = static_cast<int>(ui * lin.inv_delta);
+      if (si >= lin.S) si = lin.S - 1;
+      if (oi[si] >= 0) continue;  // full
+    }
+    const int kk = ncol(theta, tau);
+    if (kk >= n_open_) continue;
+    if (holdable && past_flight_angle(kk, slot_of(kk, theta, tau), tau)) continue;
+    k_out = kk;
+    return true;
+  }
+  return false;
+}
+
 bool LayerSim::past_flight_angle(int k, int s, double tau) const {
   double c, sn;
   slot_dir(k, s, tau, c, sn);
@@ -1059,16 +1158,10 @@ void LayerSim::place(int id, int k, int s, double tau) {
   // room at a place its layer can hold.
   if (past_flight_angle(k, s, tau)) {
     double theta = slot_angle(k, s, tau);
-    const double step = L_[0].delta;
-    for (int i = 0; i < 2 * L_[0].S; ++i) {
-      theta -= step;
-      const int kk = ncol(theta, tau);
-      if (kk >= n_open_) continue;
-      const int ss = slot_of(kk, theta, tau);
-      if (past_flight_angle(kk, ss, tau)) continue;
+    int kk;
+    if (toe_ward_room(theta, tau, true, kk)) {
       k = kk;
-      s = ss;
-      break;
+      s = slot_of(kk, theta, tau);
     }
     roll();
   }
@@ -1138,14 +1231,37 @@ bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out) {
 }
 
 void LayerSim::relax_surface(double tau) {
-  // passes each way round the outer cells until nothing rolls (at most 6);
+  // Passes each way round the outer cells until nothing rolls (at most 6);
   // in each column the top element rolls (on over as many columns as it
-  // must), then the next one, until the column is stable
+  // must), then the next one, until the column is stable.
+  //
+  // Only columns whose top could roll are visited: the first pass takes the
+  // candidates of the fresh column map (relax_candidate(), a conservative
+  // test), and a move marks the columns within reach of its source and its
+  // destination (the neighbours roll_target() looks at lie within
+  // relax_reach_ outer cells) for the rest of this pass and the next. Since a
+  // column whose surroundings did not change cannot start to roll, this
+  // visits every column the full sweep would move, in the same order.
   const Layer& l0 = L_[0];
+  const int S0 = l0.S;
+  relax_cur_.assign(S0, 0);
+  relax_next_.assign(S0, 0);
+  window_extreme(col_, relax_reach_, false, colmin_);
+  for (int s = 0; s < S0; ++s) relax_cur_[s] = relax_candidate(s, tau);
+  auto mark = [&](int c) {
+    for (int o = -relax_reach_; o <= relax_reach_; ++o) {
+      int i = c + o;
+      if (i < 0) i += S0;
+      else if (i >= S0) i -= S0;
+      relax_cur_[i] = 1;
+      relax_next_[i] = 1;
+    }
+  };
   for (int pass = 0; pass < 6; ++pass) {
     int moved = 0;
-    for (int q = 0; q < l0.S; ++q) {
-      const int s0 = pass % 2 == 0 ? q : l0.S - 1 - q;
+    for (int q = 0; q < S0; ++q) {
+      const int s0 = pass % 2 == 0 ? q : S0 - 1 - q;
+      if (!relax_cur_[s0]) continue;
       const double th = slot_angle(0, s0, tau);
       for (int top = 0; top < 32; ++top) {
         const int h = ncol(th, tau);
@@ -1163,10 +1279,62 @@ void LayerSim::relax_surface(double tau) {
         if (averaging_ && tau >= t_avg0_) energy_ += m_ * kGravity * (y0 - elem_y_entry_[id]);
         leave_slot(id, k, s, tau);
         place(id, kn, sn, tau);
+        mark(s0);
+        mark(slot_of(0, slot_angle(kn, sn, tau), tau));
+        if (elem_layer_[id] >= 0) mark(slot_of(0, slot_angle(elem_layer_[id], elem_slot_[id], tau), tau));
       }
     }
     if (moved == 0) break;
+    std::swap(relax_cur_, relax_next_);
+    std::fill(relax_next_.begin(), relax_next_.end(), 0);
   }
+}
+
+bool LayerSim::relax_candidate(int s, double tau) const {
+  // Whether the top of the column above outer cell s may roll, from the
+  // fresh column map at tau. Conservative: false only where roll_target()
+  // must return false. Bounds used: at any angle within relax_reach_ outer
+  // cells of s the top found by ncol() is at least the smallest column
+  // height h_min there (every cell of layer j < h_min is occupied at the
+  // outer-cell centres, and each cell of layer j contains one of them), so a
+  // cell an element could roll into lies between the radii of layers h_min
+  // and n_open - 1.
+  const int h = col_[s];  // = ncol() at the centre of cell s: the map is fresh
+  if (h == 0) return false;
+  const int k = h - 1;
+  double c, sn;
+  slot_dir(0, s, tau, c, sn);
+  // the top's slot is within half its cell plus half an outer cell of the
+  // column's centre: allow that much angle (sin and cos change no faster)
+  const double tol = L_[k].delta + L_[0].delta;
+  if (c > -tol && sn > sin_fa_[k] - tol) return true;  // past the flight angle
+  if (k == 0 || L_[k].held) return false;              // only the past rule moves these
+  const int h_min = std::min(n_open_, colmin_[s]);  // over s +- relax_reach_
+  // an overhang: the point one diameter below the top lies in the top's ring
+  // or outside it while sin(theta) <= 0.3, where every column within reach
+  // at least as tall as this one fills it; above that it may reach into the
+  // next ring, which only a column shorter than n_open leaves room in
+  if (h_min < h || (sn > 0.3 && h < n_open_)) return true;
+  if (c >= tol) return false;  // the rising side: no repose rule
+  // the toe side, repose: the lowest and nearest a neighbouring free cell
+  // can be against the angle-of-repose line through the top
+  if (h_min >= n_open_) return false;  // full columns all round: nowhere to roll
+  const double th = slot_angle(0, s, tau);
+  const int st = slot_of(k, th, tau);
+  double ct, stp;
+  slot_dir(k, st, tau, ct, stp);
+  const double x = L_[k].r * ct, y = L_[k].r * stp;
+  const double r_out = L_[h_min].r, r_in = L_[n_open_ - 1].r;
+  const double tht = std::atan2(stp, ct);
+  for (double dir : {-1.0, 1.0}) {
+    const double thn = tht + dir * L_[k].delta;
+    const double cn = std::cos(thn), snn = std::sin(thn);
+    const double y_low = std::min(r_out * snn, r_in * snn);
+    const double x_a = std::min(r_out * cn, r_in * cn), x_b = std::max(r_out * cn, r_in * cn);
+    const double run_min = x < x_a ? x_a - x : (x > x_b ? x - x_b : 0.0);
+    if (y_low < y && y - y_low > tan_g_ * run_min - 1e-12) return true;
+  }
+  return false;
 }
 
 void LayerSim::check_departure(int j, int s, double tau) {
@@ -1184,12 +1352,51 @@ void LayerSim::check_departure(int j, int s, double tau) {
 void LayerSim::support_sweep(double tau) {
   // An element whose cell below has emptied (the layers slip past each other)
   // falls into it: no element hangs over a void (docs/models/layer.md §Foot).
+  // Only slots whose support may have changed since the last sweep are
+  // looked at (docs/models/layer.md §Incremental maps): those entered since,
+  // those over a cell left since, and those whose cell below changed as the
+  // layers slipped (SlotMap::changed). Layer by layer outwards and in
+  // ascending slot order, as a sweep of every slot would be.
+  const bool full = sup_full_;
+  if (!full)
+    for (int j = 1; j < n_open_; ++j) {
+      const double D = (L_[j].omega - L_[j - 1].omega) * (tau - t_sup_) * L_[j - 1].inv_delta;
+      // only an element whose new cell below is empty can fall
+      const SlotMap& map = supmap_[j];
+      const double b1 = supmap_offset(j, tau);
+      const int* o = &occ_[L_[j].offset];
+      const int* ob = &occ_[L_[j - 1].offset];
+      if (!map.changed(supmap_b_[j], D, [&](int s) {
+            if (o[s] >= 0 && ob[map.cell(s, b1)] < 0) mark_sup(j, s);
+          }))
+        for (int s = 0; s < L_[j].S; ++s) mark_sup(j, s);
+    }
+  sup_full_ = false;
   moved_.clear();
   for (int j = 1; j < n_open_; ++j) {
     const Layer& l = L_[j];
-    for (int s = 0; s < l.S; ++s) {
-      int id = occ(j, s);
+    const Layer& lb = L_[j - 1];
+    const int* o = &occ_[l.offset];
+    const int* ob = &occ_[lb.offset];
+    // the cell of layer j - 1 under slot s of layer j: floor(base + s ratio)
+    // mod S_{j-1}, as slot_of()
+    const double base = supmap_offset(j, tau);
+    const SlotMap& map = supmap_[j];
+    std::vector<int>& list = sup_dirty_list_[j];
+    if (full) {
+      for (const int s : list) sup_dirty_[l.offset + s] = 0;
+      list.resize(l.S);
+      std::iota(list.begin(), list.end(), 0);
+    } else {
+      std::sort(list.begin(), list.end());
+      for (const int s : list) sup_dirty_[l.offset + s] = 0;
+    }
+    // falls from this layer mark the layer above, never this one: the list
+    // does not change while it is walked
+    for (const int s : list) {
+      const int id = o[s];
       if (id < 0) continue;
+      if (ob[map.cell(s, base)] >= 0) continue;  // supported (the common case)
       const double th = slot_angle(j, s, tau);
       int k = j, sk = s;
       while (k > 0) {
@@ -1204,7 +1411,10 @@ void LayerSim::support_sweep(double tau) {
         moved_.push_back(id);
       }
     }
+    list.clear();
   }
+  for (int j = 1; j < n_open_; ++j) supmap_b_[j] = supmap_offset(j, tau);
+  t_sup_ = tau;
   // those that fell past the flight angle of their new layer settle (after
   // the sweep, so that each starts from its own cell)
   for (const int id : moved_) {
@@ -1215,77 +1425,159 @@ void LayerSim::support_sweep(double tau) {
   }
 }
 
+void LayerSim::note_cell(int j, int k, double tau, bool entered) {
+  if (!maps_ready_) return;
+  if (!col_full_) {
+    // only columns that reach layer j (height >= j) see the change
+    if (j == 0) mark_col(k);
+    else colmap_[j].over(k, colmap_offset(j, tau), [&](int s) {
+      if (col_[s] >= j) mark_col(s);
+    });
+  }
+  if (!sup_full_) {
+    if (entered) {
+      if (j >= 1) mark_sup(j, k);
+    } else if (j + 1 < n_open_) {
+      supmap_[j + 1].over(k, supmap_offset(j + 1, tau), [&](int s) { mark_sup(j + 1, s); });
+    }
+  }
+}
+
 // ============================================================================
 // Sampling: loads, occupancy, power
 // ============================================================================
 
-void LayerSim::update_columns(double tau) {
+void LayerSim::update_columns(double tau, bool window) {
   // Column above each outer cell: how many layers are filled from the liner
-  // (no element hangs over a void), swept layer by layer.
+  // (no element hangs over a void). Incremental (docs/models/layer.md
+  // §Incremental maps): only the columns through a cell entered or left since
+  // the last map, or whose cell in some layer changed as the layers slipped
+  // (SlotMap::changed), are recomputed; a full sweep otherwise.
   const Layer& l0 = L_[0];
   const int S0 = l0.S;
-  const int* o0 = &occ_[l0.offset];
-  for (int s = 0; s < S0; ++s) col_[s] = o0[s] >= 0 ? 1 : 0;
-  const double dph0 = l0.omega * (tau - t_step0_);
-  active_.clear();
-  for (int s = 0; s < S0; ++s)
-    if (col_[s]) active_.push_back(s);
-  for (int j = 1; j < n_open_ && !active_.empty(); ++j) {
-    const Layer& l = L_[j];
-    const int* o = &occ_[l.offset];
-    // slot of layer j under outer slot s: floor(base + s ratio) mod S_j
-    const double base = wrap2pi(l0.phase + dph0 - l.phase - l.omega * (tau - t_step0_)) * l.inv_delta + 0.5;
-    const double ratio = l0.delta * l.inv_delta;
-    size_t w = 0;
-    for (const int s : active_) {
-      int k = static_cast<int>(base + s * ratio);
-      while (k >= l.S) k -= l.S;
-      if (o[k] >= 0) {
-        col_[s] = j + 1;
-        active_[w++] = s;
-      }
-    }
-    active_.resize(w);
+  bool full = col_full_;
+  // A column of height h depends on its cells in layers 0 .. h only; one
+  // whose cell in layer j <= h moved to a cell of the same occupancy keeps
+  // its height (a change of occupancy of the old cell since the last map was
+  // noted by note_cell()).
+  for (int j = 1; j < n_open_ && !full; ++j) {
+    const double D = (l0.omega - L_[j].omega) * (tau - t_map_) * L_[j].inv_delta;
+    const SlotMap& map = colmap_[j];
+    const double b0 = colmap_b_[j], b1 = colmap_offset(j, tau);
+    const int* o = &occ_[L_[j].offset];
+    full = !map.changed(b0, D, [&](int s) {
+      if (j > col_[s] || col_dirty_[s]) return;
+      if ((o[map.cell(s, b0)] >= 0) != (o[map.cell(s, b1)] >= 0)) mark_col(s);
+    });
   }
-  // window maxima over s-m .. s+m (circular), by the van Herk / Gil-Werman
-  // block method: O(S) whatever m
-  const int m = std::min(col_m_, (S0 - 1) / 2);
+  for (int j = 1; j < n_open_; ++j) colmap_b_[j] = colmap_offset(j, tau);
+  if (full) {
+    const int* o0 = &occ_[l0.offset];
+    active_.clear();
+    for (int s = 0; s < S0; ++s) {
+      const bool on = o0[s] >= 0;
+      col_[s] = on;
+      if (on) active_.push_back(s);
+    }
+    for (int j = 1; j < n_open_ && !active_.empty(); ++j) {
+      const int* o = &occ_[L_[j].offset];
+      const SlotMap& map = colmap_[j];
+      const double base = colmap_b_[j];
+      size_t w = 0;
+      for (const int s : active_) {
+        if (o[map.cell(s, base)] >= 0) {
+          col_[s] = j + 1;
+          active_[w++] = s;
+        }
+      }
+      active_.resize(w);
+    }
+  } else {
+    for (const int s : col_dirty_list_) {
+      int h = 0;
+      if (occ_[l0.offset + s] >= 0) {
+        h = 1;
+        while (h < n_open_ && occ_[L_[h].offset + colmap_[h].cell(s, colmap_b_[h])] >= 0) ++h;
+      }
+      col_[s] = h;
+    }
+  }
+  for (const int s : col_dirty_list_) col_dirty_[s] = 0;
+  col_dirty_list_.clear();
+  col_full_ = false;
+  t_map_ = tau;
+  if (!window) return;
+  window_extreme(col_, col_m_, true, colwin_);
+  t_win_ = tau;
+}
+
+void LayerSim::window_extreme(const std::vector<int>& v, int m, bool max, std::vector<int>& out) {
+  // Extreme of v over s-m .. s+m (circular) for every s, by the van Herk /
+  // Gil-Werman block method: O(S) whatever m.
+  const int S = static_cast<int>(v.size());
+  m = std::min(m, (S - 1) / 2);
   const int w = 2 * m + 1;
-  const int n = S0 + 2 * m;  // unrolled: position p holds slot (p - m) mod S0
+  const int n = S + 2 * m;  // unrolled: position p holds slot (p - m) mod S
   win_pre_.resize(n);
   win_suf_.resize(n);
-  auto at = [&](int p) {
-    int i = p - m;
-    if (i < 0) i += S0;
-    else if (i >= S0) i -= S0;
-    return col_[i];
-  };
-  for (int p = 0; p < n; ++p) win_pre_[p] = (p % w == 0) ? at(p) : std::max(win_pre_[p - 1], at(p));
-  for (int p = n - 1; p >= 0; --p)
-    win_suf_[p] = (p == n - 1 || (p + 1) % w == 0) ? at(p) : std::max(win_suf_[p + 1], at(p));
-  for (int s = 0; s < S0; ++s) colwin_[s] = std::max(win_suf_[s], win_pre_[s + w - 1]);  // window [s, s + w - 1] unrolled
-  t_map_ = tau;
+  win_val_.resize(n);
+  out.resize(S);
+  // the minimum is minus the maximum of -v
+  int* val = win_val_.data();
+  int* pre = win_pre_.data();
+  int* suf = win_suf_.data();
+  if (max) {
+    std::copy(v.end() - m, v.end(), val);
+    std::copy(v.begin(), v.end(), val + m);
+    std::copy(v.begin(), v.begin() + m, val + m + S);
+  } else {
+    std::transform(v.end() - m, v.end(), val, std::negate<int>());
+    std::transform(v.begin(), v.end(), val + m, std::negate<int>());
+    std::transform(v.begin(), v.begin() + m, val + m + S, std::negate<int>());
+  }
+  for (int p0 = 0; p0 < n; p0 += w) {  // blocks [p0, p0 + w)
+    const int p1 = std::min(n, p0 + w);
+    int mx = val[p0];
+    pre[p0] = mx;
+    for (int p = p0 + 1; p < p1; ++p) pre[p] = mx = std::max(mx, val[p]);
+    mx = val[p1 - 1];
+    suf[p1 - 1] = mx;
+    for (int p = p1 - 2; p >= p0; --p) suf[p] = mx = std::max(mx, val[p]);
+  }
+  int* o = out.data();
+  if (max)
+    for (int s = 0; s < S; ++s) o[s] = std::max(suf[s], pre[s + w - 1]);  // window [s, s + w - 1] unrolled
+  else
+    for (int s = 0; s < S; ++s) o[s] = -std::max(suf[s], pre[s + w - 1]);
 }
 
 double LayerSim::bed_clearance(double r, double theta, double tau) const {
   if (r < r_open_min_) return r_open_min_ - r;
   const Layer& l0 = L_[0];
-  const double ph = l0.phase + l0.omega * (t_map_ - t_step0_);
-  int s = static_cast<int>(wrap2pi(theta - ph + 0.5 * l0.delta) * l0.inv_delta);
-  if (s >= l0.S) s -= l0.S;
-  // the window covers the rotation of every layer over (t_map, tau + H] and
-  // two extra cells of growth by landings meanwhile
-  const double rot_slots = omega_ * ((tau - t_map_) + skip_H_) * l0.inv_delta;
-  const double lateral = r * l0.delta * (col_m_ - 0.5 - rot_slots);
-  const int h = std::min(n_open_, colwin_[s] + 2);
-  const double radial = (R_eff_ - h * d_) - r;
-  if (radial >= lateral || radial > 0.5 * d_) return std::min(radial, lateral);
-  // Closer look: the distance to each column of the window is at least the
-  // larger of the radial gap to its top and the angular gap to it.
-  // nearest columns first; stop once the angular gap alone exceeds the best
-  double best = lateral;
   const int S0 = l0.S;
+  auto outer_slot = [&](double t) {  // outer slot at theta at time t
+    int s = static_cast<int>(wrap2pi(theta - (l0.phase + l0.omega * (t - t_step0_)) + 0.5 * l0.delta) * l0.inv_delta);
+    return s >= S0 ? s - S0 : s;
+  };
+  // The window maxima (of the map at t_win) cover the rotation of every
+  // layer over (t_win, tau + H] and two extra cells of growth by landings
+  // meanwhile.
+  {
+    const double rot_slots = omega_ * ((tau - t_win_) + skip_H_) * l0.inv_delta;
+    const double lateral = r * l0.delta * (col_m_ - 0.5 - rot_slots);
+    const int h = std::min(n_open_, colwin_[outer_slot(t_win_)] + 2);
+    const double radial = (R_eff_ - h * d_) - r;
+    if (radial >= lateral || radial > 0.5 * d_) return std::min(radial, lateral);
+  }
+  // Closer look, with the (possibly newer) map at t_map: the distance to
+  // each column within col_m cells is at least the larger of the radial gap
+  // to its top and the angular gap to it; the columns beyond are at least
+  // the angular gap to the edge away. Nearest columns first; stop once the
+  // angular gap alone exceeds the best.
+  const double rot_slots = omega_ * ((tau - t_map_) + skip_H_) * l0.inv_delta;
   const double cell = r * l0.delta;
+  double best = cell * (col_m_ - 0.5 - rot_slots);
+  const int s = outer_slot(t_map_);
   for (int q = 0; q <= col_m_; ++q) {
     const double a = cell * std::max(0.0, q - 0.5 - rot_slots);
     if (a >= best) break;
@@ -1421,7 +1713,24 @@ ChargeResult LayerSim::run() {
   for (int j = 0; j < n_open_ && ring_is_layer_; ++j) ring_is_layer_ = occupancy_->n_angular(j) == L_[j].S;
   col_.assign(L_[0].S, 0);
   colwin_.assign(L_[0].S, n_open_);
+  colmap_.assign(n_open_, SlotMap());
+  supmap_.assign(n_open_, SlotMap());
+  for (int j = 1; j < n_open_; ++j) {
+    colmap_[j] = SlotMap(L_[0].S, L_[j].S, L_[0].delta * L_[j].inv_delta);
+    supmap_[j] = SlotMap(L_[j].S, L_[j - 1].S, L_[j].delta * L_[j - 1].inv_delta);
+  }
+  colmap_b_.assign(n_open_, 0.0);
+  supmap_b_.assign(n_open_, 0.0);
+  col_dirty_.assign(L_[0].S, 0);
+  col_dirty_list_.clear();
+  sup_dirty_.assign(occ_.size(), 0);
+  sup_dirty_list_.assign(n_open_, {});
+  col_full_ = sup_full_ = true;
+  maps_ready_ = true;
   r_open_min_ = R_eff_ - n_open_ * d_;
+  // roll_target() looks one cell of the top's layer to each side and one
+  // diameter below it; a cell of layer k spans S_0 / S_k outer cells
+  relax_reach_ = static_cast<int>(std::ceil(3.0 * L_[0].S / L_[n_open_ - 1].S)) + 1;
   cos0_.resize(L_[0].S);
   sin0_.resize(L_[0].S);
   for (int s = 0; s < L_[0].S; ++s) {
@@ -1455,7 +1764,7 @@ ChargeResult LayerSim::run() {
   skip_H_ = 2.0 * L_[0].delta / w_max;
   col_m_ = static_cast<int>(std::ceil(w_max * (sample_dt + dt_ + 2.0 * skip_H_) / L_[0].delta)) + 1;
   t_step0_ = 0;
-  update_columns(0.0);
+  update_columns(0.0, true);
   for (long long k = 0; k < n_steps; ++k) {
     const double t0 = k * dt_, t1 = (k + 1) * dt_;
     t_step0_ = t0;
@@ -1468,11 +1777,11 @@ ChargeResult LayerSim::run() {
     t_step0_ = t1;
     if (std::floor(t1 / relax_dt) > std::floor(t0 / relax_dt)) {
       support_sweep(t1);
-      update_columns(t1);  // fresh column tops for the relaxation
+      update_columns(t1, false);  // fresh column tops for the relaxation
       relax_surface(t1);
     }
     if (std::floor(t1 / sample_dt) > std::floor(t0 / sample_dt) || k + 1 == n_steps) {
-      update_columns(t1);
+      update_columns(t1, true);
       if (averaging_) {
         const double w = t1 - std::max(t_last_sample_, t_avg0_);
         avg_time_ += w;
