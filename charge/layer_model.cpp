@@ -203,8 +203,9 @@ class LayerSim {
   void place(int id, int k, int s, double tau);
   /// From theta, steps against the rotation (one outer cell at a time) to
   /// the first column with room below n_open (and, with `holdable`, whose
-  /// top cell its layer can hold); theta and k_out are that column's angle
-  /// and top. False if there is none.
+  /// top cell its layer can hold), passing over the columns the column map
+  /// shows full; theta and k_out are that column's angle and top. False if
+  /// there is none.
   bool toe_ward_room(double& theta, double tau, bool holdable, int& k_out) const;
   /// The slot is on the rising side beyond the flight angle of its layer.
   bool past_flight_angle(int k, int s, double tau) const;
@@ -839,10 +840,15 @@ bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
     const double spv = std::sqrt(va.squaredNorm());
     // Clear of the liner and of the charge: jump by the time needed to cover
     // the distance to the nearer (no check needed).
-    const double dist = std::min(r_ride_min - ra, bed_clearance(ra, tha, tau));
+    // The clearance to the liner and to the innermost open layer holds at
+    // any time; the one from the column map only for skip_H_ after it.
+    const double d_liner = r_ride_min - ra;
+    const double d_bed = ra < r_open_min_ ? r_open_min_ - ra : bed_clearance(ra, tha, tau);
+    const double dist = std::min(d_liner, d_bed);
     if (dist > sample_len) {
       const double sp = std::max(spv, 1e-3);
-      tau += std::min(skip_H_, (-sp + std::sqrt(sp * sp + 2 * kGravity * dist)) / kGravity);
+      const double cap = (ra < r_open_min_ || d_liner <= d_bed) ? kInf : skip_H_;
+      tau += std::min(cap, (-sp + std::sqrt(sp * sp + 2 * kGravity * dist)) / kGravity);
       f.t_next = tau;
       if (tau >= t1) return false;
       pa = flight_position(f, tau);
@@ -1096,30 +1102,26 @@ void LayerSim::deposit(int id, double theta, double tau, const V& v_land) {
 }
 
 bool LayerSim::toe_ward_room(double& theta, double tau, bool holdable, int& k_out) const {
-  // Steps of one outer cell against the rotation, up to two turns. A column
-  // is full when its top is at n_open: with the map's hint full (n_open) that
-  // is so exactly when the cell of the innermost layer is occupied (ncol()
-  // walks down from the hint), which is checked with running slot
-  // coordinates, without ncol()'s trigonometry.
+  // Steps of one outer cell against the rotation, up to two turns. Columns
+  // the map (col_, at t_map_) shows full are passed over in one integer
+  // scan; the first one it shows with room is checked exactly (ncol()), and
+  // the scan goes on from there if the map was out of date.
   const Layer& l0 = L_[0];
-  const Layer& lin = L_[n_open_ - 1];
+  const int S0 = l0.S;
   const double step = l0.delta;
-  double u0 = wrap2pi(theta - (l0.phase + l0.omega * (t_map_ - t_step0_)) + 0.5 * l0.delta);
-  double ui = wrap2pi(theta - (lin.phase + lin.omega * (tau - t_step0_)) + 0.5 * lin.delta);
-  const int* oi = &occ_[lin.offset];
-  for (int i = 0; i < 2 * l0.S; ++i) {
-    theta -= step;
-    u0 -= step;
-    if (u0 < 0) u0 += kTwoPi;
-    ui -= step;
-    if (ui < 0) ui += kTwoPi;
-    int s0 = static_cast<int>(u0 * l0.inv_delta);
-    if (s0 >= l0.S) s0 = l0.S - 1;
-    if (col_[s0] >= n_open_) {
-      int si = static_cast<int>(ui * lin.inv_delta);
-      if (si >= lin.S) si = lin.S - 1;
-      if (oi[si] >= 0) continue;  // full
-    }
+  int s0 = static_cast<int>(wrap2pi(theta - (l0.phase + l0.omega * (t_map_ - t_step0_)) + 0.5 * l0.delta) * l0.inv_delta);
+  if (s0 >= S0) s0 -= S0;
+  int i = 0;
+  while (i < 2 * S0) {
+    // the next column the map shows with room
+    int n = 0;
+    do {
+      ++n;
+      if (--s0 < 0) s0 += S0;
+    } while (col_[s0] >= n_open_ && i + n < 2 * S0);
+    i += n;
+    theta -= n * step;
+    if (col_[s0] >= n_open_) break;
     const int kk = ncol(theta, tau);
     if (kk >= n_open_) continue;
     if (holdable && past_flight_angle(kk, slot_of(kk, theta, tau), tau)) continue;

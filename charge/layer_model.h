@@ -34,6 +34,6 @@ double layer_model_max_time_step(const ChargeInput& in, double effective_radius_
 
 /// Courant number (shell travel per step / media diameter) above which the
 /// layer model sub-steps (from the time-step study, docs/models/layer.md).
-constexpr double kLayerMaxCourant = 0.25;
+constexpr double kLayerMaxCourant = 0.45;
 
 }  // namespace linerlife
