@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "charge/charge_spec.h"
+#include "forecast/forecast_spec.h"
 #include "geometry/lifter_design.h"
 #include "geometry/mill.h"
 
@@ -30,6 +31,7 @@ struct Config {
   std::string pattern = "uniform";
   std::optional<double> low_lifter_height_m, low_lifter_top_width_m;
   ModelSpec model;
+  ForecastSpec forecast;
 
   std::map<std::string, int> key_lines;  // "section.key" -> line in the source (1-based)
   std::map<std::string, int> section_lines;
@@ -37,13 +39,16 @@ struct Config {
 
 /// A configuration value as TOML holds it.
 struct ConfigValue {
-  enum class Kind { Real, Int, String } kind = Kind::Real;
+  enum class Kind { Real, Int, String, Date, Shutdowns } kind = Kind::Real;
   double real = 0;
   long long integer = 0;
-  std::string text;
+  std::string text;                 // String; Date as "YYYY-MM-DD"
+  std::vector<Shutdown> shutdowns;  // Shutdowns: [{start = YYYY-MM-DD, days = N}, ...]
   static ConfigValue Real(double v) { ConfigValue c; c.kind = Kind::Real; c.real = v; return c; }
   static ConfigValue Int(long long v) { ConfigValue c; c.kind = Kind::Int; c.integer = v; return c; }
   static ConfigValue String(std::string v) { ConfigValue c; c.kind = Kind::String; c.text = std::move(v); return c; }
+  static ConfigValue Date(std::string v) { ConfigValue c; c.kind = Kind::Date; c.text = std::move(v); return c; }
+  static ConfigValue List(std::vector<Shutdown> v) { ConfigValue c; c.kind = Kind::Shutdowns; c.shutdowns = std::move(v); return c; }
 };
 
 /// One key of the schema.
@@ -81,6 +86,7 @@ void add_mill_keys(Schema& s);
 void add_charge_keys(Schema& s);
 void add_liner_keys(Schema& s);
 void add_model_keys(Schema& s);
+void add_forecast_keys(Schema& s);
 
 /// Parses and checks a configuration: TOML syntax, unknown sections and keys,
 /// types, ranges, missing required keys and the cross-key rules. Throws
