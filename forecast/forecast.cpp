@@ -551,13 +551,26 @@ void Life::run_ode() {
   };
 
   start();
-  double next_out = dt_out;
+  // output times: every dt_out, and exactly at the extra times asked for
+  std::vector<double> extra;
+  for (double h : spec_.extra_output_hours)
+    if (h > 0) extra.push_back(h * 3600.0);
+  std::sort(extra.begin(), extra.end());
+  size_t next_extra = 0;
+  double next_regular = dt_out;
+  auto next_output = [&] { return next_extra < extra.size() ? std::min(next_regular, extra[next_extra]) : next_regular; };
+  auto advance_output = [&] {  // past every output time already reached
+    while (next_extra < extra.size() && extra[next_extra] <= t_ * (1 + 1e-12)) ++next_extra;
+    while (next_regular <= t_ * (1 + 1e-12)) next_regular += dt_out;
+  };
+  double next_out = next_output();
   while (true) {
     // an event can land on an output time: record it before asking CVODE for
     // an interval it would call too short
     if (t_ >= next_out * (1 - 1e-12) && next_out < horizon) {
       record(t_);
-      next_out += dt_out;
+      advance_output();
+      next_out = next_output();
       continue;
     }
     const double tout = std::min(next_out, horizon);
@@ -598,7 +611,8 @@ void Life::run_ode() {
       break;
     }
     record(t_);
-    next_out += dt_out;
+    advance_output();
+    next_out = next_output();
   }
 done:
   res_.stats.cvode_steps = steps;

@@ -38,6 +38,7 @@ struct ForecastSpec {
   double amplify_revolutions = 1.5;  // [rev] amplify: revolutions simulated per step (Qiu 2001: about 1.5)
   double euler_step_h = 100;         // [h] euler: fixed step
   double output_interval_h = 100;    // [h] history and profile snapshots at least this often
+  std::vector<double> extra_output_hours;  // [h] snapshots also exactly at these times (calibration; ode method)
 };
 
 const char* method_name(ForecastMethod m);
