@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
 
 #include <Eigen/Geometry>
 
@@ -19,62 +20,141 @@ std::vector<std::vector<double> LinerLoads::*> extensive_fields() {
           &LinerLoads::normal_slip_power_w_per_m, &LinerLoads::shear_work_rate_w_per_m};
 }
 
-V rotate(const V& p, double a) { return Eigen::Rotation2Dd(a) * p; }
-
-int nearest(const V& p, const LinerSurface& s, int b, int e, double rot) {
-  int best = b;
-  double bd = std::numeric_limits<double>::max();
-  for (int j = b; j < e; ++j) {
-    const double d = (rotate(s.midpoint[j], rot) - p).squaredNorm();
-    if (d < bd) {
-      bd = d;
-      best = j;
+/// The element of the polyline pts whose segment is closest to p.
+int closest_element(const V& p, const std::vector<V>& pts) {
+  double best = std::numeric_limits<double>::max();
+  int where = 0;
+  for (size_t i = 0; i + 1 < pts.size(); ++i) {
+    const V ab = pts[i + 1] - pts[i];
+    const double l2 = ab.squaredNorm();
+    const double t = l2 > 0 ? std::clamp((p - pts[i]).dot(ab) / l2, 0.0, 1.0) : 0.0;
+    const double d = (pts[i] + t * ab - p).squaredNorm();
+    if (d < best) {
+      best = d;
+      where = static_cast<int>(i);
     }
   }
-  return best;
+  return where;
 }
 
-/// Carries segment ks of `from` (rotated by `rot`) onto segment kt of `to`,
-/// adding `weight` x the loads into `out` (sized for `to`). Returns the map
-/// from source element to target element for the impacts.
-std::vector<int> carry_segment(const LinerLoads& in, const LinerSurface& from, int ks, const LinerSurface& to, int kt,
-                               double rot, double weight, LinerLoads& out) {
-  const int fb = from.segment_begin[ks], fe = from.segment_begin[ks + 1];
-  const int tb = to.segment_begin[kt], te = to.segment_begin[kt + 1];
-  std::vector<int> src_of(static_cast<size_t>(te - tb)), dst_of(static_cast<size_t>(fe - fb));
-  std::vector<double> mapped_len(static_cast<size_t>(fe - fb), 0.0);
-  for (int j = tb; j < te; ++j) {
-    // target midpoint rotated back into the source frame
-    const int i = nearest(rotate(to.midpoint[j], -rot), from, fb, fe, 0.0);
-    src_of[j - tb] = i;
-    mapped_len[i - fb] += to.length[j];
+/// The chain of segment k (both edge nodes), rotated by rot.
+std::vector<V> chain(const LinerSurface& s, int k, double rot) {
+  const Eigen::Rotation2Dd r(rot);
+  std::vector<V> pts;
+  for (int i = s.segment_begin[k]; i <= s.segment_begin[k + 1]; ++i) pts.push_back(r * s.nodes[i % s.n_nodes()]);
+  return pts;
+}
+
+/// True when segment k carries no load at all (nothing to carry).
+bool segment_empty(const LinerLoads& in, const LinerSurface& s, int k) {
+  for (auto f : extensive_fields()) {
+    const auto& v = in.*f;
+    if (v.size() != static_cast<size_t>(s.n_elements())) continue;
+    for (int i = s.segment_begin[k]; i < s.segment_begin[k + 1]; ++i)
+      if (v[i] != 0) return false;
   }
-  for (int i = fb; i < fe; ++i) dst_of[i - fb] = nearest(rotate(from.midpoint[i], rot), to, tb, te, 0.0);
-  const auto fields = extensive_fields();
-  for (auto f : fields) {
-    const auto& src = in.*f;
-    auto& dst = out.*f;
-    if (src.size() != static_cast<size_t>(from.n_elements())) continue;
-    for (int j = tb; j < te; ++j) {
-      const int i = src_of[j - tb];
-      const double ml = mapped_len[i - fb];
-      if (ml > 0) dst[j] += weight * src[i] * to.length[j] / ml;
+  return true;
+}
+
+/// Where each target element of segment kt of `to` takes its loads from: the
+/// element q of segment ks of `from` (rotated by rot) closest to the target's
+/// midpoint, and the factor length_target / length_q that turns q's loads into
+/// the target's at the same load per unit length.
+std::vector<std::pair<int, double>> source_of(const LinerSurface& from, int ks, const LinerSurface& to, int kt,
+                                              double rot) {
+  const int fb = from.segment_begin[ks];
+  const std::vector<V> sp = chain(from, ks, rot);
+  std::vector<std::pair<int, double>> src;
+  for (int j = to.segment_begin[kt]; j < to.segment_begin[kt + 1]; ++j) {
+    const int q = fb + closest_element(to.midpoint[j], sp);
+    const double lq = from.length[q];
+    src.emplace_back(q, lq > 0 ? to.length[j] / lq : 0.0);
+  }
+  return src;
+}
+
+/// Adds `weight` x the loads of segment ks of `in` (on `from`) carried onto
+/// segment kt of `to` into `out`: each target element takes the load per unit
+/// length of its source element (source_of) times its length, and every field
+/// (and the impact rates together) is scaled so the segment's totals are kept.
+void carry_segment(const LinerLoads& in, const LinerSurface& from, int ks, const LinerSurface& to, int kt, double rot,
+                   double weight, const std::vector<std::vector<const ImpactEvent*>>& impacts_on, LinerLoads& out) {
+  const auto src = source_of(from, ks, to, kt, rot);
+  const int tb = to.segment_begin[kt];
+  const int nt = static_cast<int>(src.size());
+  for (auto f : extensive_fields()) {
+    const auto& s = in.*f;
+    auto& d = out.*f;
+    if (s.size() != static_cast<size_t>(from.n_elements())) continue;
+    double total = 0, carried = 0;
+    for (int i = from.segment_begin[ks]; i < from.segment_begin[ks + 1]; ++i) total += s[i];
+    for (int j = 0; j < nt; ++j) carried += s[src[j].first] * src[j].second;
+    if (total == 0) continue;
+    if (carried != 0) {
+      const double scale = weight * total / carried;
+      for (int j = 0; j < nt; ++j) d[tb + j] += scale * s[src[j].first] * src[j].second;
+    } else {  // no target fell on a loaded element: spread the total by length
+      double len = 0;
+      for (int j = 0; j < nt; ++j) len += to.length[tb + j];
+      for (int j = 0; j < nt; ++j) d[tb + j] += weight * total * to.length[tb + j] / len;
     }
-    for (int i = fb; i < fe; ++i)
-      if (!(mapped_len[i - fb] > 0)) dst[dst_of[i - fb]] += weight * src[i];
   }
-  // speeds are intensive: the load-weighted mean of what maps in (slip_speed = <N v>/<N>)
+  // speeds are intensive: slip speed = <N v> / <N> of what was carried in
   if (in.slip_speed_m_s.size() == static_cast<size_t>(from.n_elements()))
-    for (int j = tb; j < te; ++j) {
-      const int i = src_of[j - tb];
-      if (out.normal_force_n_per_m.empty()) {
-        out.slip_speed_m_s[j] = in.slip_speed_m_s[i];
-      } else {
-        const double n = out.normal_force_n_per_m[j];
-        out.slip_speed_m_s[j] = n > 0 ? out.normal_slip_power_w_per_m[j] / n : in.slip_speed_m_s[i];
-      }
+    for (int j = 0; j < nt; ++j) {
+      const double n = out.normal_force_n_per_m[tb + j];
+      out.slip_speed_m_s[tb + j] = n > 0 ? out.normal_slip_power_w_per_m[tb + j] / n : in.slip_speed_m_s[src[j].first];
     }
-  return dst_of;
+  // impacts: copies on every target of the element they hit, rates as load per length, total kept
+  double total = 0, carried = 0;
+  const int fb = from.segment_begin[ks];
+  for (int q = fb; q < from.segment_begin[ks + 1]; ++q)
+    for (const ImpactEvent* e : impacts_on[q - fb]) total += e->rate_per_s;
+  if (total == 0) return;
+  const size_t first = out.impacts.size();
+  for (int j = 0; j < nt; ++j)
+    for (const ImpactEvent* e : impacts_on[src[j].first - fb]) {
+      ImpactEvent c = *e;
+      c.element = tb + j;
+      c.rate_per_s = e->rate_per_s * src[j].second;
+      carried += c.rate_per_s;
+      out.impacts.push_back(c);
+    }
+  if (carried > 0) {
+    for (size_t i = first; i < out.impacts.size(); ++i) out.impacts[i].rate_per_s *= weight * total / carried;
+  } else {  // no target fell on a hit element: put the impacts on the target nearest to each
+    const std::vector<V> tpts = chain(to, kt, 0.0);
+    for (int q = fb; q < from.segment_begin[ks + 1]; ++q)
+      for (const ImpactEvent* e : impacts_on[q - fb]) {
+        ImpactEvent c = *e;
+        c.element = tb + closest_element(Eigen::Rotation2Dd(rot) * from.midpoint[q], tpts);
+        c.rate_per_s = weight * e->rate_per_s;
+        out.impacts.push_back(c);
+      }
+  }
+}
+
+/// Impacts identical but for their rate, on the same element, become one.
+void merge_impacts(std::vector<ImpactEvent>& ev) {
+  auto key = [](const ImpactEvent& e) {
+    return std::make_tuple(e.element, e.normal_speed_m_s, e.tangential_speed_m_s, e.mass_kg, e.diameter_m, e.direct);
+  };
+  std::sort(ev.begin(), ev.end(), [&](const ImpactEvent& a, const ImpactEvent& b) { return key(a) < key(b); });
+  std::vector<ImpactEvent> out;
+  for (const ImpactEvent& e : ev) {
+    if (!out.empty() && key(out.back()) == key(e)) out.back().rate_per_s += e.rate_per_s;
+    else out.push_back(e);
+  }
+  ev.swap(out);
+}
+
+/// The impacts on each element of segment k of s.
+std::vector<std::vector<const ImpactEvent*>> impacts_by_element(const LinerLoads& l, const LinerSurface& s, int k) {
+  std::vector<std::vector<const ImpactEvent*>> by(static_cast<size_t>(s.segment_size(k)));
+  for (const ImpactEvent& e : l.impacts)
+    if (e.element >= s.segment_begin[k] && e.element < s.segment_begin[k + 1])
+      by[static_cast<size_t>(e.element - s.segment_begin[k])].push_back(&e);
+  return by;
 }
 
 void check_same_segments(const LinerSurface& a, const LinerSurface& b) {
@@ -89,13 +169,13 @@ LinerLoads transfer_loads(const LinerLoads& loads, const LinerSurface& from, con
   LinerLoads out;
   out.reset(to.n_elements(), loads.duration_s);
   out.has_impacts = loads.has_impacts;
-  std::vector<int> dst(static_cast<size_t>(from.n_elements()));
+  std::vector<char> has_impact(static_cast<size_t>(from.segments), 0);
+  for (const ImpactEvent& e : loads.impacts) has_impact[static_cast<size_t>(from.element_segment[e.element])] = 1;
   for (int k = 0; k < from.segments; ++k) {
-    const std::vector<int> d = carry_segment(loads, from, k, to, k, 0.0, 1.0, out);
-    for (size_t q = 0; q < d.size(); ++q) dst[static_cast<size_t>(from.segment_begin[k]) + q] = d[q];
+    if (!has_impact[k] && segment_empty(loads, from, k)) continue;  // nothing to carry
+    carry_segment(loads, from, k, to, k, 0.0, 1.0, impacts_by_element(loads, from, k), out);
   }
-  out.impacts = loads.impacts;
-  for (ImpactEvent& e : out.impacts) e.element = dst[static_cast<size_t>(e.element)];
+  merge_impacts(out.impacts);
   return out;
 }
 
@@ -130,7 +210,8 @@ LinerSurface replicate_representatives(const LinerSurface& s) {
     const int d = s.segment_design.empty() ? 0 : s.segment_design[k];
     const int r = rep[d];
     out.segment_begin.push_back(out.n_nodes());
-    for (int i = s.segment_begin[r]; i < s.segment_begin[r + 1]; ++i) out.nodes.push_back(rotate(s.nodes[i], (k - r) * da));
+    const Eigen::Rotation2Dd rot((k - r) * da);
+    for (int i = s.segment_begin[r]; i < s.segment_begin[r + 1]; ++i) out.nodes.push_back(rot * s.nodes[i]);
   }
   out.segment_begin.push_back(out.n_nodes());
   out.finalize();
@@ -145,25 +226,16 @@ LinerLoads average_onto_representatives(const LinerLoads& loads, const LinerSurf
   out.reset(s.n_elements(), loads.duration_s);
   out.has_impacts = loads.has_impacts;
   const double da = s.segment_angle_rad();
-  std::vector<int> dst(static_cast<size_t>(s.n_elements()));
   for (int k = 0; k < s.segments; ++k) {
     const int d = s.segment_design.empty() ? 0 : s.segment_design[k];
-    const std::vector<int> m = carry_segment(loads, s, k, s, rep[d], (rep[d] - k) * da, 1.0 / count[d], out);
-    for (size_t q = 0; q < m.size(); ++q) dst[static_cast<size_t>(s.segment_begin[k]) + q] = m[q];
+    carry_segment(loads, s, k, s, rep[d], (rep[d] - k) * da, 1.0 / count[d], impacts_by_element(loads, s, k), out);
   }
   // slip speeds of the representatives from the averaged powers and forces
   for (int i = 0; i < s.n_elements(); ++i) {
     const double n = out.normal_force_n_per_m[i];
     out.slip_speed_m_s[i] = n > 0 ? out.normal_slip_power_w_per_m[i] / n : 0.0;
   }
-  for (const ImpactEvent& e : loads.impacts) {
-    ImpactEvent c = e;
-    const int k = s.element_segment[e.element];
-    const int d = s.segment_design.empty() ? 0 : s.segment_design[k];
-    c.element = dst[static_cast<size_t>(e.element)];
-    c.rate_per_s = e.rate_per_s / count[d];
-    out.impacts.push_back(c);
-  }
+  merge_impacts(out.impacts);
   return out;
 }
 

@@ -2,14 +2,16 @@
 // different elements (after a remesh), or averages them over the liners of
 // the same design (thesis Table B.1 LinerComputation = one liner).
 //
-// Each element of the target takes the loads of the source element nearest
-// to it (by midpoint, within the same segment). Forces and powers (per
-// element, per metre of mill length) are shared out among the target
-// elements mapped to the same source element in proportion to their length,
-// and a source element no target element maps to gives its loads to the
-// target element nearest to it, so the totals over a segment are kept
-// exactly. Speeds are copied. Impacts move to the target element nearest to
-// the element they hit.
+// Segment by segment, every element of the target takes the load per unit
+// length of the source element closest to its midpoint, times its own length,
+// and each field is then scaled so that the segment's total is kept: the
+// charge's push on a liner stays what the charge model gave, and its
+// distribution follows position on the profile. (Keeping each source
+// element's load on the stretch of new profile it maps to instead would pile
+// the load onto a receding convex corner, whose elements shrink, and make the
+// rate there run away.) Speeds follow as <N v> / <N>. Impacts are copied onto
+// the targets of the element they hit with their rates scaled alike, and
+// impacts identical but for their rate on one element are merged.
 #pragma once
 
 #include <cstddef>  // before charge/liner_loads.h, which uses size_t without including it
@@ -41,7 +43,7 @@ LinerSurface replicate_representatives(const LinerSurface& s);
 /// representative liner of each design sees on average per revolution. Each
 /// segment is rotated onto its representative and carried over as in
 /// transfer_loads; the sum over the segments of a design is divided by their
-/// number. Impact rates are divided likewise.
+/// number. Impact rates are divided likewise (identical impacts merged).
 LinerLoads average_onto_representatives(const LinerLoads& loads, const LinerSurface& s);
 
 }  // namespace linerlife

@@ -101,7 +101,7 @@ WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry) {
   };
 
   // ---- rates on the current surface
-  LinerLoads loads;                  // on `surface`
+  LinerLoads loads;                  // on `surface`; in "one" mode averaged onto the representatives
   std::vector<double> elem_rate;     // [m/s] amplified, per element of the full ring
   std::vector<double> node_rate;     // [m/s] amplified, per node; zero outside the representatives in "one" mode
   PartRates parts;
@@ -109,8 +109,7 @@ WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry) {
   const int rep_lo = *std::min_element(reps.begin(), reps.end());
   const int rep_hi = *std::max_element(reps.begin(), reps.end());
   auto update_rates = [&]() {
-    const LinerLoads& l = one ? average_onto_representatives(loads, surface) : loads;
-    recession_rates(wm, l, surface, in.material, res.rates);
+    recession_rates(wm, loads, surface, in.material, res.rates);
     res.rates_surface = surface;
     const int n = surface.n_elements();
     elem_rate.assign(static_cast<size_t>(n), 0.0);
@@ -139,7 +138,7 @@ WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry) {
   };
 
   drive(surface);
-  loads = charge.loads;
+  loads = one ? average_onto_representatives(charge.loads, surface) : charge.loads;
   update_rates();
 
   // ---- time stepping
@@ -218,7 +217,15 @@ WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry) {
         for (int q = 0; q < m; ++q) depth[b + q] = sr.values[q];
         if (one && e < surface.n_nodes()) depth[e] = depth[b];  // the edge node after the representatives
       }
-      RemeshResult rr = remesh(surface, depth, in.remesh);
+      RemeshResult rr;
+      try {
+        rr = remesh(surface, depth, in.remesh);
+      } catch (const std::runtime_error& e) {
+        // the geometry could not be repaired (e.g. a steep wear step at a segment edge)
+        throw SimulationError(fmt::format("the worn profile could not be remeshed at t = {:.3f} s ({}); smooth the "
+                                          "wear ([wear] smoothing) or remesh more often",
+                                          t, e.what()));
+      }
       LinerSurface next = one ? replicate_representatives(rr.surface) : rr.surface;
       const double next_area = ring_area(next);
       const double removed = area - next_area;  // [m2]
@@ -253,7 +260,7 @@ WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry) {
       if (step < n_steps) {
         if (redrive) {
           drive(surface);
-          loads = charge.loads;
+          loads = one ? average_onto_representatives(charge.loads, surface) : charge.loads;
         } else {
           loads = transfer_loads(loads, previous, surface);
         }
