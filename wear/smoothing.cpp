@@ -17,8 +17,9 @@ SmoothingMethod smoothing_method_from_name(const std::string& n) {
   if (n == "moving_average") return SmoothingMethod::MovingAverage;
   if (n == "csaps") return SmoothingMethod::Csaps;
   if (n == "tukey") return SmoothingMethod::Tukey;
+  if (n == "tukey_csaps") return SmoothingMethod::TukeyCsaps;
   throw InputError("wear.smoothing", fmt::format("smoothing = \"{}\": allowed one of \"none\", \"moving_average\", "
-                                                 "\"csaps\", \"tukey\"",
+                                                 "\"csaps\", \"tukey\", \"tukey_csaps\"",
                                                  n));
 }
 
@@ -28,6 +29,7 @@ const char* smoothing_method_name(SmoothingMethod m) {
     case SmoothingMethod::MovingAverage: return "moving_average";
     case SmoothingMethod::Csaps: return "csaps";
     case SmoothingMethod::Tukey: return "tukey";
+    case SmoothingMethod::TukeyCsaps: return "tukey_csaps";
   }
   return "";
 }
@@ -270,6 +272,9 @@ SmoothingResult smooth_depth(const std::vector<double>& y, const std::vector<dou
     case SmoothingMethod::MovingAverage: r.values = moving_average(y, spec.window, periodic); break;
     case SmoothingMethod::Csaps: r.values = csaps(y, spacing, w, spec.csaps_p, periodic); break;
     case SmoothingMethod::Tukey: r.values = tukey_smooth(y, spec.tukey, periodic); break;
+    case SmoothingMethod::TukeyCsaps:
+      r.values = csaps(tukey_smooth(y, spec.tukey, periodic), spacing, w, spec.csaps_p, periodic);
+      break;
   }
   auto mass = [&](const std::vector<double>& v) {
     double m = 0;

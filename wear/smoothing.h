@@ -20,7 +20,7 @@
 
 namespace linerlife {
 
-enum class SmoothingMethod { None, MovingAverage, Csaps, Tukey };
+enum class SmoothingMethod { None, MovingAverage, Csaps, Tukey, TukeyCsaps };
 
 struct SmoothingSpec {
   SmoothingMethod method = SmoothingMethod::Csaps;
@@ -29,7 +29,9 @@ struct SmoothingSpec {
   std::string tukey = "3RSSH,twice";  // Tukey sequence (tukey_smooth)
 };
 
-/// "none", "moving_average", "csaps", "tukey" -> method; throws InputError (key "wear.smoothing") otherwise.
+/// "none", "moving_average", "csaps", "tukey", "tukey_csaps" (the thesis' final
+/// choice: the Tukey sequence, then csaps) -> method; throws InputError (key
+/// "wear.smoothing") otherwise.
 SmoothingMethod smoothing_method_from_name(const std::string& name);
 const char* smoothing_method_name(SmoothingMethod m);
 

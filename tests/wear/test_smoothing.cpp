@@ -159,7 +159,7 @@ TEST_CASE("smoothing a depth field never changes the mass removed (0.5 % rule)",
   const int n = static_cast<int>(raw.size());
   std::vector<double> sp(n, 0.01), w(n, 0.01);
   for (SmoothingMethod m : {SmoothingMethod::None, SmoothingMethod::MovingAverage, SmoothingMethod::Csaps,
-                            SmoothingMethod::Tukey}) {
+                            SmoothingMethod::Tukey, SmoothingMethod::TukeyCsaps}) {
     SmoothingSpec spec;
     spec.method = m;
     for (bool periodic : {true, false}) {
