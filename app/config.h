@@ -13,6 +13,8 @@
 #include "charge/charge_spec.h"
 #include "geometry/lifter_design.h"
 #include "geometry/mill.h"
+#include "wear/liner_material.h"
+#include "wear/wear_spec.h"
 
 namespace linerlife {
 
@@ -30,6 +32,9 @@ struct Config {
   std::string pattern = "uniform";
   std::optional<double> low_lifter_height_m, low_lifter_top_width_m;
   ModelSpec model;
+  WearSpec wear;               // laws resolved from wear_laws_text by resolve_wear_config()
+  std::string wear_laws_text = "abrasion/radziszewski, impact/sheldon_kanhere";  // [wear] laws as given
+  LinerMaterial material;      // density and hardness from [liner], ball density from [charge], the rest from [wear]
 
   std::map<std::string, int> key_lines;  // "section.key" -> line in the source (1-based)
   std::map<std::string, int> section_lines;
@@ -81,6 +86,12 @@ void add_mill_keys(Schema& s);
 void add_charge_keys(Schema& s);
 void add_liner_keys(Schema& s);
 void add_model_keys(Schema& s);
+void add_wear_keys(Schema& s);
+
+/// Fills Config::material from [liner], [charge] and [wear], parses the laws
+/// and checks the wear specification (config_schema_wear.cpp). Throws
+/// InputError naming the key.
+void resolve_wear_config(Config& c);
 
 /// Parses and checks a configuration: TOML syntax, unknown sections and keys,
 /// types, ranges, missing required keys and the cross-key rules. Throws
