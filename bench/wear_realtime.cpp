@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
     }
     std::printf("feedback %-3s: simulated %.3f s, wall %.4f s (remesh %.4f s, charge model %.4f s, %d remeshes, %d "
                 "drives) -> %.1f x real time\n",
-                feedback ? "on" : "off", r.simulated_s, median(wall), median(remesh), median(charge), r.remeshes,
+                feedback ? "on" : "off", r.simulated_s, median(wall), median(remesh), median(charge), r.remeshes + r.fast_remeshes,
                 r.charge_drives, r.simulated_s / median(wall));
   }
   in.wear.feedback = false;

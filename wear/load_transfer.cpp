@@ -20,22 +20,59 @@ std::vector<std::vector<double> LinerLoads::*> extensive_fields() {
           &LinerLoads::normal_slip_power_w_per_m, &LinerLoads::shear_work_rate_w_per_m};
 }
 
-/// The element of the polyline pts whose segment is closest to p.
-int closest_element(const V& p, const std::vector<V>& pts) {
-  double best = std::numeric_limits<double>::max();
-  int where = 0;
-  for (size_t i = 0; i + 1 < pts.size(); ++i) {
-    const V ab = pts[i + 1] - pts[i];
-    const double l2 = ab.squaredNorm();
-    const double t = l2 > 0 ? std::clamp((p - pts[i]).dot(ab) / l2, 0.0, 1.0) : 0.0;
-    const double d = (pts[i] + t * ab - p).squaredNorm();
-    if (d < best) {
-      best = d;
-      where = static_cast<int>(i);
+/// A polyline prepared for closest-element queries.
+struct Polyline {
+  std::vector<V> a, ab;
+  std::vector<double> inv_l2;  // 1 / |ab|^2, 0 for a degenerate element
+  explicit Polyline(const std::vector<V>& pts) {
+    for (size_t i = 0; i + 1 < pts.size(); ++i) {
+      a.push_back(pts[i]);
+      ab.push_back(pts[i + 1] - pts[i]);
+      const double l2 = ab.back().squaredNorm();
+      inv_l2.push_back(l2 > 0 ? 1.0 / l2 : 0.0);
     }
   }
-  return where;
-}
+  double distance2(const V& p, size_t i) const {
+    const V ap = p - a[i];
+    const double t = std::clamp(ap.dot(ab[i]) * inv_l2[i], 0.0, 1.0);
+    return (ap - t * ab[i]).squaredNorm();
+  }
+  /// closest(p), searching first a window round `guess` (the answer for the
+  /// previous point along a similar chain) and everywhere when the best found
+  /// lies on the window's edge.
+  int closest_near(const V& p, int guess) const {
+    const int m = static_cast<int>(a.size()), w = 6;
+    const int lo = std::max(0, guess - w), hi = std::min(m - 1, guess + w);
+    int best = lo;
+    double bd = std::numeric_limits<double>::max();
+    for (int i = lo; i <= hi; ++i) {
+      const double d = distance2(p, static_cast<size_t>(i));
+      if (d < bd) {
+        bd = d;
+        best = i;
+      }
+    }
+    if ((best == lo && lo > 0) || (best == hi && hi < m - 1)) return closest(p);
+    return best;
+  }
+  /// The element whose segment is closest to p.
+  int closest(const V& p) const {
+    double best = std::numeric_limits<double>::max();
+    int where = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+      const V ap = p - a[i];
+      const double t = std::clamp(ap.dot(ab[i]) * inv_l2[i], 0.0, 1.0);
+      const double d = (ap - t * ab[i]).squaredNorm();
+      if (d < best) {
+        best = d;
+        where = static_cast<int>(i);
+      }
+    }
+    return where;
+  }
+};
+
+int closest_element(const V& p, const std::vector<V>& pts) { return Polyline(pts).closest(p); }
 
 /// The chain of segment k (both edge nodes), rotated by rot.
 std::vector<V> chain(const LinerSurface& s, int k, double rot) {
@@ -63,10 +100,12 @@ bool segment_empty(const LinerLoads& in, const LinerSurface& s, int k) {
 std::vector<std::pair<int, double>> source_of(const LinerSurface& from, int ks, const LinerSurface& to, int kt,
                                               double rot) {
   const int fb = from.segment_begin[ks];
-  const std::vector<V> sp = chain(from, ks, rot);
+  const Polyline sp(chain(from, ks, rot));
   std::vector<std::pair<int, double>> src;
+  int guess = 0;
   for (int j = to.segment_begin[kt]; j < to.segment_begin[kt + 1]; ++j) {
-    const int q = fb + closest_element(to.midpoint[j], sp);
+    guess = sp.closest_near(to.midpoint[j], guess);
+    const int q = fb + guess;
     const double lq = from.length[q];
     src.emplace_back(q, lq > 0 ? to.length[j] / lq : 0.0);
   }
@@ -163,7 +202,8 @@ void check_same_segments(const LinerSurface& a, const LinerSurface& b) {
 
 }  // namespace
 
-LinerLoads transfer_loads(const LinerLoads& loads, const LinerSurface& from, const LinerSurface& to) {
+LinerLoads transfer_loads(const LinerLoads& loads, const LinerSurface& from, const LinerSurface& to,
+                          const std::vector<int>* only) {
   check_same_segments(from, to);
   if (loads.n_elements != from.n_elements()) throw std::invalid_argument("transfer_loads: loads do not fit `from`");
   LinerLoads out;
@@ -171,9 +211,13 @@ LinerLoads transfer_loads(const LinerLoads& loads, const LinerSurface& from, con
   out.has_impacts = loads.has_impacts;
   std::vector<char> has_impact(static_cast<size_t>(from.segments), 0);
   for (const ImpactEvent& e : loads.impacts) has_impact[static_cast<size_t>(from.element_segment[e.element])] = 1;
-  for (int k = 0; k < from.segments; ++k) {
-    if (!has_impact[k] && segment_empty(loads, from, k)) continue;  // nothing to carry
-    carry_segment(loads, from, k, to, k, 0.0, 1.0, impacts_by_element(loads, from, k), out);
+  if (only) {
+    for (int k : *only) carry_segment(loads, from, k, to, k, 0.0, 1.0, impacts_by_element(loads, from, k), out);
+  } else {
+    for (int k = 0; k < from.segments; ++k) {
+      if (!has_impact[k] && segment_empty(loads, from, k)) continue;  // nothing to carry
+      carry_segment(loads, from, k, to, k, 0.0, 1.0, impacts_by_element(loads, from, k), out);
+    }
   }
   merge_impacts(out.impacts);
   return out;
@@ -212,6 +256,27 @@ LinerSurface replicate_representatives(const LinerSurface& s) {
     out.segment_begin.push_back(out.n_nodes());
     const Eigen::Rotation2Dd rot((k - r) * da);
     for (int i = s.segment_begin[r]; i < s.segment_begin[r + 1]; ++i) out.nodes.push_back(rot * s.nodes[i]);
+  }
+  out.segment_begin.push_back(out.n_nodes());
+  out.finalize();
+  return out;
+}
+
+LinerSurface replicate_chains(const LinerSurface& s, const std::vector<std::vector<Eigen::Vector2d>>& chains) {
+  const std::vector<int> rep = representative_segments(s);
+  LinerSurface out;
+  out.shell_radius_m = s.shell_radius_m;
+  out.segments = s.segments;
+  out.segment_design = s.segment_design;
+  const double da = s.segment_angle_rad();
+  size_t total = 0;
+  for (const auto& c : chains) total += c.size();
+  out.nodes.reserve(total * static_cast<size_t>(s.segments));
+  for (int k = 0; k < s.segments; ++k) {
+    const int d = s.segment_design.empty() ? 0 : s.segment_design[k];
+    out.segment_begin.push_back(out.n_nodes());
+    const Eigen::Rotation2Dd rot((k - rep[d]) * da);
+    for (size_t i = 0; i + 1 < chains[d].size(); ++i) out.nodes.push_back(rot * chains[d][i]);
   }
   out.segment_begin.push_back(out.n_nodes());
   out.finalize();

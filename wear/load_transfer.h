@@ -23,7 +23,10 @@
 namespace linerlife {
 
 /// `loads` (on `from`) carried onto `to`; both surfaces have the same segments.
-LinerLoads transfer_loads(const LinerLoads& loads, const LinerSurface& from, const LinerSurface& to);
+/// With `only`, only those segments are carried (the others must carry no
+/// loads; they stay zero), which saves looking at them.
+LinerLoads transfer_loads(const LinerLoads& loads, const LinerSurface& from, const LinerSurface& to,
+                          const std::vector<int>* only = nullptr);
 
 /// The representative segment of every design (the first segment with it):
 /// rep[d] for d = 0 (high) and, for a hi-lo pattern, 1 (low).
@@ -37,6 +40,11 @@ std::vector<int> design_counts(const LinerSurface& s);
 /// node of segment k + 1, so the representatives must agree at the edges they
 /// share with the next segment (they do when their edge nodes were moved alike).
 LinerSurface replicate_representatives(const LinerSurface& s);
+
+/// The ring rebuilt from new chains of the representatives (`chains[d]` for
+/// representative_segments()[d], both edge nodes included, as
+/// recede_segments() gives them), every segment a rotated copy.
+LinerSurface replicate_chains(const LinerSurface& s, const std::vector<std::vector<Eigen::Vector2d>>& chains);
 
 /// Loads averaged over the segments of each design and placed on its
 /// representative segment (zero on every other segment): what one

@@ -162,6 +162,9 @@ void recession_rates(const WearModel& m, const LinerLoads& loads, const LinerSur
     const double kr = m.radziszewski ? m.radziszewski_tan_theta / (kPi * H) : 0.0;  // [1/Pa] eq. 5.4
     const double ka = m.archard ? m.archard_k / H : 0.0;                           // [1/Pa] Archard
     for (size_t i = 0; i < un; ++i) {
+      if (loads.normal_force_n_per_m[i] == 0 && loads.normal_slip_power_w_per_m[i] == 0 &&
+          loads.shear_work_rate_w_per_m[i] == 0)
+        continue;  // unloaded
       double v = 0;
       if (m.radziszewski) {
         // thesis eq. 5.4: m_lin = rho tan(theta) / (pi H) N_t V_surf, here as a volume rate
@@ -190,6 +193,7 @@ void recession_rates(const WearModel& m, const LinerLoads& loads, const LinerSur
   const bool split = loads.centrifugal_force_n_per_m.size() == un && loads.gravitational_force_n_per_m.size() == un;
   for (size_t i = 0; i < un; ++i) {
     const double va = out.centrifugal[i];
+    if (va == 0 && out.impact[i] == 0) continue;  // an unloaded element (its rates are already 0)
     double share = 0;  // centrifugal share of the normal force
     if (split) {
       const double fc = std::max(0.0, loads.centrifugal_force_n_per_m[i]);

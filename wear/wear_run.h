@@ -11,12 +11,13 @@
 //          liners of a design onto one representative; copied back after the remesh)
 //   every charge time step dt (ModelSpec::time_step_s), until revolutions x 60 / rpm:
 //          node depth += dt x (A_abr abrasion + A_imp impact) rate
-//   every remesh_every_steps steps (earlier if a node has receded half an
-//   element): smooth the depth (WearSpec::smoothing), remesh (CGAL), book the
-//   area the profile lost; with feedback drive again on the worn surface,
-//   without it carry the loads onto the new elements (transfer_loads); new rates.
+//   every remesh_every_steps steps (earlier if a node would recede more than
+//   half an element): smooth the depth (WearSpec::smoothing), move the
+//   profile (recede(): remesh() or its fast path), book the area the profile
+//   lost; with feedback drive again on the worn surface, without it carry the
+//   loads onto the new elements (transfer_loads); new rates.
 // The rates between two remeshes are those of the last remeshed profile, so
-// applying them every step or once per remesh moves the profile alike; the
+// the depth of k steps is k dt x rate exactly, added at the remesh; the
 // remesh interval sets how often the profile the rates see is updated
 // (convergence study: docs/models/wear.md §6.2).
 #pragma once
@@ -77,7 +78,9 @@ struct WearRunResult {
   double mass_balance_rel_error = 0;           // mass_loss / commanded - 1 (remesh discretisation)
   double max_recession_m = 0;                  // [m] deepest point of the final profile below the initial one
   double smoothing_max_rel_change = 0;         // largest |mass change| a smoother needed corrected (before rescaling)
-  int steps = 0, remeshes = 0, charge_drives = 0;
+  int steps = 0, charge_drives = 0;
+  int remeshes = 0;       // through geometry's remesh() (CGAL)
+  int fast_remeshes = 0;  // by recede()'s fast path
   double step_s = 0;                           // [s] the wear step
   double simulated_s = 0, wall_s = 0, charge_wall_s = 0, remesh_wall_s = 0;  // [s]
   double realtime_ratio = 0;                   // simulated_s / wall_s
@@ -94,8 +97,8 @@ struct WearRunResult {
 WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry);
 
 /// Largest distance [m] of a node of `worn` below the surface `initial`
-/// (same segments): the deepest recession.
-double max_recession(const LinerSurface& initial, const LinerSurface& worn);
+/// (same segments): the deepest recession; over the segments `only` if given.
+double max_recession(const LinerSurface& initial, const LinerSurface& worn, const std::vector<int>* only = nullptr);
 
 /// Liner cross-section of the ring [m2] (sum of segment_area).
 double ring_area(const LinerSurface& s);
