@@ -4,7 +4,8 @@
 Usage (from the repository root, after building in build/):
   build/bench/bench_wear_submodels > /tmp/submodels.csv
   build/bench/bench_wear_smoothing csv > /tmp/smoothing.txt
-  /usr/bin/python3 bench/plot_wear_validation.py /tmp/submodels.csv /tmp/smoothing.txt docs/validation/img
+  build/bench/bench_wear_remesh_interval > /tmp/interval.txt
+  /usr/bin/python3 bench/plot_wear_validation.py /tmp/submodels.csv /tmp/smoothing.txt /tmp/interval.txt docs/validation/img
 """
 import io
 import os
@@ -38,7 +39,19 @@ def save(fig, out, name):
     plt.close(fig)
 
 
-def main(sub_csv, smooth_txt, out):
+def interval_tables(path):
+    """The tables of bench_wear_remesh_interval: title -> rows of numbers."""
+    tables, title = {}, None
+    for line in open(path):
+        if line.startswith("## "):
+            title = line[3:].strip()
+            tables[title] = []
+        elif title and line.strip() and not line.strip().startswith("k"):
+            tables[title].append([float(x) for x in line.split()])
+    return tables
+
+
+def main(sub_csv, smooth_txt, interval_txt, out):
     os.makedirs(out, exist_ok=True)
     s = sections(sub_csv)
 
@@ -102,9 +115,33 @@ def main(sub_csv, smooth_txt, out):
     a2.set_ylabel("residual, smoothed - raw [% of mean depth]")
     save(fig, out, "wear_smoothing_residuals.png")
 
+    # remesh interval: error against the every-step reference and wall time
+    tables = interval_tables(interval_txt)
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4))
+    for title, rows in tables.items():
+        if "tukey" in title:
+            continue
+        r = np.array(rows)
+        a1.plot(r[1:, 0], r[1:, 6], "o-", label=title)
+        a2.plot(r[1:, -1], r[1:, 6], "o-", label=title)
+        for k, x, y in zip(r[1:, 0], r[1:, -1], r[1:, 6]):
+            a2.annotate(f"{int(k)}", (x, y), fontsize=6)
+    for a in (a1, a2):
+        a.set_yscale("log")
+        a.set_ylabel("final profile of liner 0 vs every-step remesh [mm]")
+        a.grid(True, which="both", lw=0.3)
+    a1.set_xscale("log")
+    a1.set_xlabel("remesh every k time steps")
+    a2.set_xscale("log")
+    a2.set_xlabel("wall time of the run [s] (median of 5, synthetic loads)")
+    a1.legend(fontsize=7)
+    a1.set_title("Remesh interval: convergence", fontsize=9)
+    a2.set_title("Remesh interval: speed against accuracy (labels: k)", fontsize=9)
+    save(fig, out, "wear_remesh_interval.png")
+
 
 if __name__ == "__main__":
-    if len(sys.argv) != 4:
+    if len(sys.argv) != 5:
         print(__doc__, file=sys.stderr)
         sys.exit(2)
     main(*sys.argv[1:])

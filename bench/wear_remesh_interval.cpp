@@ -10,11 +10,14 @@
 // angle, mass lost, the largest distance of the final profile of liner 0
 // from the reference one, the mass balance and the wall time.
 //
-// Usage: bench_wear_remesh_interval [amplification]   (default 1e6: 1.5 revolutions ~ 100 days)
+// Usage: bench_wear_remesh_interval [amplification] [runs]
+//   default 1e6 (1.5 revolutions ~ 100 days); wall times are medians of `runs` (default 5) runs
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
 #include <limits>
+#include <vector>
 
 #include "bench/synthetic_charge.h"
 #include "bench/wear_common.h"
@@ -45,12 +48,26 @@ double profile_distance(const LinerSurface& a, const LinerSurface& b) {
 
 int main(int argc, char** argv) {
   const double amp = argc > 1 ? std::atof(argv[1]) : 1e6;
+  const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 5;
+  auto timed = [&](const WearRunInput& in, double& wall) {  // the result, and the median wall time of `runs` runs
+    std::vector<double> t;
+    WearRunResult r;
+    for (int i = 0; i < runs; ++i) {
+      const auto t0 = std::chrono::steady_clock::now();
+      r = run_wear(in, bench::synthetic_entry());
+      t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+    std::sort(t.begin(), t.end());
+    wall = t[t.size() / 2];
+    return r;
+  };
   const Config c = load_default_config();
   WearRunInput base = bench::wear_input(c);
   base.wear.amplification_abrasion = base.wear.amplification_impact = amp;
   base.wear.snapshots = 0;
-  std::printf("# Qiu mill, synthetic loads, %.2f revolutions, dt = %g s, amplification %g, liner_computation one\n",
-              base.wear.revolutions, base.model.time_step_s, amp);
+  std::printf("# Qiu mill, synthetic loads, %.2f revolutions, dt = %g s, amplification %g, liner_computation one; "
+              "wall_s: median of %d runs\n",
+              base.wear.revolutions, base.model.time_step_s, amp, runs);
   for (int variant = 0; variant < 4; ++variant) {
     const bool feedback = variant % 2 == 1;
     base.wear.feedback = feedback;
@@ -63,9 +80,8 @@ int main(int argc, char** argv) {
     for (int k : {1, 2, 5, 10, 20, 50, 100, 200, 1000}) {
       WearRunInput in = base;
       in.wear.remesh_every_steps = k;
-      const auto t0 = std::chrono::steady_clock::now();
-      const WearRunResult r = run_wear(in, bench::synthetic_entry());
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      double wall = 0;
+      const WearRunResult r = timed(in, wall);
       if (k == 1) ref = r.final;
       const SegmentMetrics m = segment_metrics(r.final, 0, in.mill.rotation, in.material.density_kg_m3);
       std::printf("%6d %9d %9d %11.5f %11.3f %12.3f %12.4f %9.2e %9.3f\n", k, r.remeshes + r.fast_remeshes, r.charge_drives,
@@ -87,9 +103,8 @@ int main(int argc, char** argv) {
   for (int k : {1, 10, 100}) {
     WearRunInput in = base;
     in.wear.remesh_every_steps = k;
-    const auto t0 = std::chrono::steady_clock::now();
-    const WearRunResult r = run_wear(in, bench::synthetic_entry());
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    double wall = 0;
+    const WearRunResult r = timed(in, wall);
     if (k == 1) ref = r.final;
     const SegmentMetrics m = segment_metrics(r.final, 0, in.mill.rotation, in.material.density_kg_m3);
     std::printf("%6d %9d %11.5f %11.3f %12.3f %12.4f %14.4f %9.3f\n", k, r.remeshes + r.fast_remeshes, m.lifter_height_m,
