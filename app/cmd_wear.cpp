@@ -8,13 +8,13 @@
 // --out writes wear.h5 (layout in docs/models/wear.md §7) and the charts of
 // thesis Figs. 5-13, 5-16, 5-17 and B-5. For Figs. 5-16 and 5-17 the run is
 // repeated with the abrasion laws only and with the impact laws only.
+#include <fmt/format.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <optional>
-
-#include <fmt/format.h>
-#include <unistd.h>
 
 #include "app/commands.h"
 #include "app/json.h"
@@ -61,8 +61,7 @@ int run_wear_command(const WearOptions& o) {
   if (o.amplification) {
     const double a = *o.amplification;
     if (!(std::isfinite(a) && a > 0 && a <= 1e9))
-      throw InputError("--amplification",
-                       fmt::format("--amplification {}: out of range; allowed 0 < value <= 1e9", a));
+      throw InputError("--amplification", fmt::format("--amplification {}: out of range; allowed 0 < value <= 1e9", a));
     c.wear.amplification_abrasion = c.wear.amplification_impact = a;
   }
   if (o.revolutions) {
@@ -119,8 +118,8 @@ int run_wear_command(const WearOptions& o) {
     const SegmentMetrics m0 = segment_metrics(r.initial, 0, mill.rotation, c.material.density_kg_m3);
     const SegmentMetrics m1 = segment_metrics(r.final, 0, mill.rotation, c.material.density_kg_m3);
     std::cout << fmt::format("Wear run of {} ({} charge model, {} revolutions, amplification {:g}/{:g}{})\n", c.source,
-                             entry.name, c.wear.revolutions, c.wear.amplification_abrasion,
-                             c.wear.amplification_impact, c.wear.feedback ? ", feedback" : "");
+                             entry.name, c.wear.revolutions, c.wear.amplification_abrasion, c.wear.amplification_impact,
+                             c.wear.feedback ? ", feedback" : "");
     std::cout << fmt::format("  laws                        {}\n", law_list_text(c.wear.laws));
     std::cout << fmt::format("  mass lost                   {:>10.3f} kg per m of length ({:.1f} kg for {} m)\n",
                              r.mass_loss_kg_per_m, r.mass_loss_kg_per_m * mill.length_m, mill.length_m);

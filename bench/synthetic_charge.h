@@ -111,7 +111,6 @@ class SyntheticCharge : public ChargeModel {
     r.stats.simulated_s = r.loads.duration_s;
     return r;
   }
-
 };
 
 inline std::unique_ptr<ChargeModel> make_synthetic_charge() { return std::make_unique<SyntheticCharge>(); }

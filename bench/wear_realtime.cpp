@@ -81,10 +81,11 @@ int main(int argc, char** argv) {
   }
 
   // 2. the coupled run
-  std::printf("\n## 2. coupled wear run, [wear] of the bundled mill (%g revolutions, remesh every %d steps, %s, %s "
-              "liner, amplification %g), synthetic charge model; median of %d\n",
-              in.wear.revolutions, in.wear.remesh_every_steps, smoothing_method_name(in.wear.smoothing.method),
-              in.wear.liner_computation.c_str(), in.wear.amplification_abrasion, runs);
+  std::printf(
+      "\n## 2. coupled wear run, [wear] of the bundled mill (%g revolutions, remesh every %d steps, %s, %s "
+      "liner, amplification %g), synthetic charge model; median of %d\n",
+      in.wear.revolutions, in.wear.remesh_every_steps, smoothing_method_name(in.wear.smoothing.method),
+      in.wear.liner_computation.c_str(), in.wear.amplification_abrasion, runs);
   for (bool feedback : {false, true}) {
     in.wear.feedback = feedback;
     std::vector<double> wall, remesh, charge;
@@ -95,10 +96,11 @@ int main(int argc, char** argv) {
       remesh.push_back(r.remesh_wall_s);
       charge.push_back(r.charge_wall_s);
     }
-    std::printf("feedback %-3s: simulated %.3f s, wall %.4f s (remesh %.4f s, charge model %.4f s, %d remeshes, %d "
-                "drives) -> %.1f x real time\n",
-                feedback ? "on" : "off", r.simulated_s, median(wall), median(remesh), median(charge), r.remeshes + r.fast_remeshes,
-                r.charge_drives, r.simulated_s / median(wall));
+    std::printf(
+        "feedback %-3s: simulated %.3f s, wall %.4f s (remesh %.4f s, charge model %.4f s, %d remeshes, %d "
+        "drives) -> %.1f x real time\n",
+        feedback ? "on" : "off", r.simulated_s, median(wall), median(remesh), median(charge),
+        r.remeshes + r.fast_remeshes, r.charge_drives, r.simulated_s / median(wall));
   }
   in.wear.feedback = false;
 
@@ -120,7 +122,8 @@ int main(int argc, char** argv) {
     const ChargeResult cr = model->run(ci);
     alone.push_back(seconds(t0));
     WearModel m = wm;
-    if (m.needs_operating_point()) set_operating_point(m, operating_point(in.mill, in.charge, &cr.indicators, in.surface));
+    if (m.needs_operating_point())
+      set_operating_point(m, operating_point(in.mill, in.charge, &cr.indicators, in.surface));
     recession_rates(m, cr.loads, in.surface, in.material);
     with_rates.push_back(seconds(t0));
     coupled.push_back(run_wear(in, *layer).wall_s);

@@ -12,10 +12,10 @@
 //
 // Usage: bench_wear_remesh_interval [amplification] [runs]
 //   default 1e6 (1.5 revolutions ~ 100 days); wall times are medians of `runs` (default 5) runs
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <algorithm>
 #include <limits>
 #include <vector>
 
@@ -65,9 +65,10 @@ int main(int argc, char** argv) {
   WearRunInput base = bench::wear_input(c);
   base.wear.amplification_abrasion = base.wear.amplification_impact = amp;
   base.wear.snapshots = 0;
-  std::printf("# Qiu mill, synthetic loads, %.2f revolutions, dt = %g s, amplification %g, liner_computation one; "
-              "wall_s: median of %d runs\n",
-              base.wear.revolutions, base.model.time_step_s, amp, runs);
+  std::printf(
+      "# Qiu mill, synthetic loads, %.2f revolutions, dt = %g s, amplification %g, liner_computation one; "
+      "wall_s: median of %d runs\n",
+      base.wear.revolutions, base.model.time_step_s, amp, runs);
   for (int variant = 0; variant < 4; ++variant) {
     const bool feedback = variant % 2 == 1;
     base.wear.feedback = feedback;
@@ -84,8 +85,8 @@ int main(int argc, char** argv) {
       const WearRunResult r = timed(in, wall);
       if (k == 1) ref = r.final;
       const SegmentMetrics m = segment_metrics(r.final, 0, in.mill.rotation, in.material.density_kg_m3);
-      std::printf("%6d %9d %9d %11.5f %11.3f %12.3f %12.4f %9.2e %9.3f\n", k, r.remeshes + r.fast_remeshes, r.charge_drives,
-                  m.lifter_height_m, m.face_angle_leading_deg, r.mass_loss_kg_per_m,
+      std::printf("%6d %9d %9d %11.5f %11.3f %12.3f %12.4f %9.2e %9.3f\n", k, r.remeshes + r.fast_remeshes,
+                  r.charge_drives, m.lifter_height_m, m.face_angle_leading_deg, r.mass_loss_kg_per_m,
                   1e3 * std::max(profile_distance(r.final, ref), profile_distance(ref, r.final)),
                   r.mass_balance_rel_error, wall);
       std::fflush(stdout);
@@ -107,8 +108,8 @@ int main(int argc, char** argv) {
     const WearRunResult r = timed(in, wall);
     if (k == 1) ref = r.final;
     const SegmentMetrics m = segment_metrics(r.final, 0, in.mill.rotation, in.material.density_kg_m3);
-    std::printf("%6d %9d %11.5f %11.3f %12.3f %12.4f %14.4f %9.3f\n", k, r.remeshes + r.fast_remeshes, m.lifter_height_m,
-                m.face_angle_leading_deg, r.mass_loss_kg_per_m,
+    std::printf("%6d %9d %11.5f %11.3f %12.3f %12.4f %14.4f %9.3f\n", k, r.remeshes + r.fast_remeshes,
+                m.lifter_height_m, m.face_angle_leading_deg, r.mass_loss_kg_per_m,
                 1e3 * std::max(profile_distance(r.final, ref), profile_distance(ref, r.final)),
                 r.smoothing_max_rel_change, wall);
     std::fflush(stdout);

@@ -36,11 +36,16 @@ struct Smoother {
 std::vector<double> apply(const Smoother& s, const std::vector<double>& y, const std::vector<double>& sp,
                           const std::vector<double>& w) {
   switch (s.spec.method) {
-    case SmoothingMethod::None: return y;
-    case SmoothingMethod::MovingAverage: return moving_average(y, s.spec.window, false);
-    case SmoothingMethod::Csaps: return csaps(y, sp, w, s.spec.csaps_p, false);
-    case SmoothingMethod::Tukey: return tukey_smooth(y, s.spec.tukey, false);
-    case SmoothingMethod::TukeyCsaps: return csaps(tukey_smooth(y, s.spec.tukey, false), sp, w, s.spec.csaps_p, false);
+    case SmoothingMethod::None:
+      return y;
+    case SmoothingMethod::MovingAverage:
+      return moving_average(y, s.spec.window, false);
+    case SmoothingMethod::Csaps:
+      return csaps(y, sp, w, s.spec.csaps_p, false);
+    case SmoothingMethod::Tukey:
+      return tukey_smooth(y, s.spec.tukey, false);
+    case SmoothingMethod::TukeyCsaps:
+      return csaps(tukey_smooth(y, s.spec.tukey, false), sp, w, s.spec.csaps_p, false);
   }
   return y;
 }
@@ -127,8 +132,8 @@ int main(int argc, char** argv) {
     }
     if (d == 0) example_raw = raw;
   }
-  std::printf("# thesis Fig. 5-18 on a simulated profile: 61 nodes of Qiu liner 0, mean depth %.4f m, %d draws\n",
-              mean, draws);
+  std::printf("# thesis Fig. 5-18 on a simulated profile: 61 nodes of Qiu liner 0, mean depth %.4f m, %d draws\n", mean,
+              draws);
   std::printf("# errors as a fraction of the mean depth; mass = mean |change of sum w y| before any correction\n");
   std::printf("%-50s %11s %12s %12s %12s %12s\n", "smoother", "rms_vs_raw", "rms_vs_truth", "max_vs_truth",
               "mass_change", "corrected");

@@ -13,7 +13,7 @@
 using namespace linerlife;
 
 int main() {
-  const LinerMaterial m;  // Cr-Mo liner 350 BHN, forged steel balls 600 BHN (defaults)
+  const LinerMaterial m;   // Cr-Mo liner 350 BHN, forged steel balls 600 BHN (defaults)
   LinerMaterial soft = m;  // a softer liner, 250 BHN, to show the trend
   soft.hardness_bhn = 250;
   std::printf("# restitution: speed_m_s,e_350bhn,e_250bhn,johnson_asymptote_350bhn\n");
@@ -26,8 +26,9 @@ int main() {
     std::printf("%.4f,%.6f,%.6f,%.6e,%.6e\n", v, impact_contact(v, 0.05, m).friction, c.friction, c.contact_time_s,
                 c.crater_diameter_m);
   }
-  std::printf("\n# erosion at 8 m/s per kg of 0.1333 m balls [m3/kg]: angle_deg,finnie,bitter_deformation,"
-              "bitter_cutting,bitter,rabinowicz,sheldon_kanhere\n");
+  std::printf(
+      "\n# erosion at 8 m/s per kg of 0.1333 m balls [m3/kg]: angle_deg,finnie,bitter_deformation,"
+      "bitter_cutting,bitter,rabinowicz,sheldon_kanhere\n");
   const double U = 8;
   for (double a = 1; a <= 90.0; a += 1) {
     const double r = a * M_PI / 180, vn = U * std::sin(r), vt = U * std::cos(r);

@@ -17,7 +17,7 @@ double finnie_volume(double mass, double vn, double vt, const FinnieParams& p, c
   const double rot = 1.0 + p.inertia_ratio;
   const double c = p.cutting_fraction * mass * u2 / (2.0 * m.hardness_pa() * p.depth_ratio * rot);
   const double lambda = rot / p.force_ratio;
-  const double xdot = ca - 2.0 * lambda * sa;  // tip speed / U when it leaves the surface
+  const double xdot = ca - 2.0 * lambda * sa;        // tip speed / U when it leaves the surface
   if (xdot > 0) return c * (ca * ca - xdot * xdot);  // leaves still cutting: tan a < 1/(2 lambda)
   return c * ca * ca;                                // horizontal motion stops first
 }
@@ -25,13 +25,13 @@ double finnie_volume(double mass, double vn, double vt, const FinnieParams& p, c
 BitterVolume bitter_volume(double mass, double vn, double vt, const BitterParams& p, const LinerMaterial& m) {
   BitterVolume w;
   const double k = bitter_elastic_limit_speed(m);  // [m/s] eq. 5.13
-  if (!(vn > k)) return w;                          // elastic impact: no wear
+  if (!(vn > k)) return w;                         // elastic impact: no wear
   const double y = m.yield_stress_pa, rho = m.ball.density_kg_m3;
-  const double excess = vn - k;                     // U sin a - K
+  const double excess = vn - k;  // U sin a - K
   // Bitter part I (thesis eq. 5.12): deformation wear
   w.deformation_m3 = mass * excess * excess / (2.0 * p.deformation_j_m3);
   // Bitter part II (thesis eqs. 5.14-5.17): cutting wear
-  const double cb = 0.288 / y * std::pow(rho / y, 0.25);   // [1/(Pa sqrt(m/s))]
+  const double cb = 0.288 / y * std::pow(rho / y, 0.25);                   // [1/(Pa sqrt(m/s))]
   const double u = cb * p.cutting_j_m3 * excess * excess / std::sqrt(vn);  // [m/s]
   if (vt - 2.0 * u >= 0) {
     w.cutting_m3 = 2.0 * mass * u / p.cutting_j_m3 * (vt - u);  // W_C1, a < a0

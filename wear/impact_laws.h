@@ -74,9 +74,9 @@ double rabinowicz_volume(double mass_kg, double vn, double vt, double diameter_m
 /// sound (n = 3 is the original), and with D^3 = 6 M / (pi rho_b) so that it
 /// is linear in the impacting mass.
 struct SheldonKanhereParams {
-  double k = 0.07;            // [-]
-  double exponent = 2.35;     // [-] n (thesis §5.4.2: wear goes as U^2..U^2.35)
-  bool normal_speed = true;   // U = vn (indentation physics); false: U = |v| as in the thesis
+  double k = 0.07;           // [-]
+  double exponent = 2.35;    // [-] n (thesis §5.4.2: wear goes as U^2..U^2.35)
+  bool normal_speed = true;  // U = vn (indentation physics); false: U = |v| as in the thesis
 };
 
 double sheldon_kanhere_volume(double mass_kg, double vn, double vt, const SheldonKanhereParams& p,

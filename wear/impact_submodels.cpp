@@ -62,10 +62,10 @@ ImpactContact impact_contact(double vn, double diameter_m, const LinerMaterial& 
   c.crater_diameter_m = crater_diameter(c.crater_volume_m3, R);
   // Yabuki (1999), thesis eq. 5.20: f = [A s + A' p'] / [m (1 + e) vn / dt]
   const double d = c.crater_diameter_m;
-  const double area = kPi * d * d / 8.0;          // [m2] mean contact area A
-  const double plough = d * d * d / (12.0 * R);   // [m2] crater cross-section A'
+  const double area = kPi * d * d / 8.0;                                            // [m2] mean contact area A
+  const double plough = d * d * d / (12.0 * R);                                     // [m2] crater cross-section A'
   const double tangential = area * m.shear_strength_pa + plough * m.hardness_pa();  // [N]
-  const double normal = mass * (1.0 + c.restitution) * vn / c.contact_time_s;        // [N]
+  const double normal = mass * (1.0 + c.restitution) * vn / c.contact_time_s;       // [N]
   c.friction = tangential / normal;
   return c;
 }

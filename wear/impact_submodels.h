@@ -53,11 +53,11 @@ double crater_diameter(double volume_m3, double radius_m);
 
 /// Everything eq. 5.20 needs for one impact, and its result.
 struct ImpactContact {
-  double restitution = 1;      // [-] e
-  double contact_time_s = 0;   // [s] Delta t
-  double crater_volume_m3 = 0;  // [m3]
+  double restitution = 1;        // [-] e
+  double contact_time_s = 0;     // [s] Delta t
+  double crater_volume_m3 = 0;   // [m3]
   double crater_diameter_m = 0;  // [m] d
-  double friction = 0;         // [-] f, tangential over normal force
+  double friction = 0;           // [-] f, tangential over normal force
 };
 
 /// Yabuki's (1999) impact friction coefficient (thesis eq. 5.20): the

@@ -1,8 +1,8 @@
 #include "wear/liner_material.h"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "geometry/errors.h"
 

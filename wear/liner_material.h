@@ -38,7 +38,9 @@ struct LinerMaterial {
   double vickers_pa() const { return 1.05 * hardness_pa(); }
   /// Limiting contact pressure [Pa] of a ball-liner impact: the softer of the two
   /// (Thornton 1997's p_y; the mean pressure of a fully plastic indentation is the hardness).
-  double limiting_pressure_pa() const { return brinell_to_pa(hardness_bhn < ball.hardness_bhn ? hardness_bhn : ball.hardness_bhn); }
+  double limiting_pressure_pa() const {
+    return brinell_to_pa(hardness_bhn < ball.hardness_bhn ? hardness_bhn : ball.hardness_bhn);
+  }
   /// Effective contact modulus E* [Pa]: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (Hertz; Johnson 1985 eq. 4.22).
   double contact_modulus_pa() const {
     return 1.0 / ((1 - ball.poisson_ratio * ball.poisson_ratio) / ball.elastic_modulus_pa +

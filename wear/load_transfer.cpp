@@ -1,12 +1,11 @@
 #include "wear/load_transfer.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <tuple>
-
-#include <Eigen/Geometry>
 
 namespace linerlife {
 namespace {
@@ -15,9 +14,9 @@ using V = Eigen::Vector2d;
 
 /// The per-element fields that add up (forces, powers).
 std::vector<std::vector<double> LinerLoads::*> extensive_fields() {
-  return {&LinerLoads::normal_force_n_per_m,      &LinerLoads::centrifugal_force_n_per_m,
+  return {&LinerLoads::normal_force_n_per_m,        &LinerLoads::centrifugal_force_n_per_m,
           &LinerLoads::gravitational_force_n_per_m, &LinerLoads::shear_force_n_per_m,
-          &LinerLoads::normal_slip_power_w_per_m, &LinerLoads::shear_work_rate_w_per_m};
+          &LinerLoads::normal_slip_power_w_per_m,   &LinerLoads::shear_work_rate_w_per_m};
 }
 
 /// A polyline prepared for closest-element queries.
@@ -181,8 +180,10 @@ void merge_impacts(std::vector<ImpactEvent>& ev) {
   std::sort(ev.begin(), ev.end(), [&](const ImpactEvent& a, const ImpactEvent& b) { return key(a) < key(b); });
   std::vector<ImpactEvent> out;
   for (const ImpactEvent& e : ev) {
-    if (!out.empty() && key(out.back()) == key(e)) out.back().rate_per_s += e.rate_per_s;
-    else out.push_back(e);
+    if (!out.empty() && key(out.back()) == key(e))
+      out.back().rate_per_s += e.rate_per_s;
+    else
+      out.push_back(e);
   }
   ev.swap(out);
 }

@@ -68,8 +68,8 @@ bool recede_segments(const LinerSurface& s, const std::vector<double>& depth, co
         const double den = d1.x() * d2.y() - d1.y() * d2.x();
         if (std::abs(den) < 1e-12 * d1.norm() * d2.norm()) return false;
         const V w = c[q + 1] - c[q - 1];
-        const double t1 = (w.x() * d2.y() - w.y() * d2.x()) / den;  // along d1 from c[q - 1]
-        const double t2 = (w.x() * d1.y() - w.y() * d1.x()) / den;  // along d2 from c[q + 1]
+        const double t1 = (w.x() * d2.y() - w.y() * d2.x()) / den;   // along d1 from c[q - 1]
+        const double t2 = (w.x() * d1.y() - w.y() * d1.x()) / den;   // along d2 from c[q + 1]
         if (!(t1 > 0 && t1 < 2 && t2 > -1 && t2 < 1)) return false;  // not a small swallowtail
         c[q] = c[q - 1] + t1 * d1;
         c.erase(c.begin() + q + 1);

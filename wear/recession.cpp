@@ -1,11 +1,11 @@
 #include "wear/recession.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <set>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 #include "geometry/errors.h"
 #include "geometry/mill.h"
@@ -44,8 +44,9 @@ void validate_wear_spec(const WearSpec& spec) {
   if (spec.snapshots < 0)
     throw InputError("wear.snapshots", fmt::format("snapshots = {}: allowed an integer >= 0", spec.snapshots));
   if (spec.liner_computation != "one" && spec.liner_computation != "all")
-    throw InputError("wear.liner_computation",
-                     fmt::format("liner_computation = \"{}\": allowed one of \"one\", \"all\"", spec.liner_computation));
+    throw InputError(
+        "wear.liner_computation",
+        fmt::format("liner_computation = \"{}\": allowed one of \"one\", \"all\"", spec.liner_computation));
   if (!(spec.smoothing.csaps_p > 0 && spec.smoothing.csaps_p <= 1))
     throw InputError("wear.smoothing_p",
                      fmt::format("smoothing_p = {}: out of range; allowed 0 < value <= 1", spec.smoothing.csaps_p));
@@ -63,8 +64,10 @@ void validate_wear_spec(const WearSpec& spec) {
   // laws keeps a file valid), but its value must still be in range.
   for (const auto& e : wear_laws())
     for (const auto& p : e.parameters) {
-      if (p.choices.empty()) law_parameter(spec, p);
-      else law_choice(spec, p);
+      if (p.choices.empty())
+        law_parameter(spec, p);
+      else
+        law_choice(spec, p);
     }
 }
 
@@ -89,7 +92,7 @@ WearModel make_wear_model(const WearSpec& spec, const ChargeModelEntry& charge_m
       m.radziszewski = true;
       m.radziszewski_tan_theta = law_parameter(spec, param(e, "radziszewski_tan_theta"));
       const std::string slip = law_choice(spec, param(e, "radziszewski_slip"));
-      m.slip = slip == "morrell" ? SlipModel::Morrell
+      m.slip = slip == "morrell"        ? SlipModel::Morrell
                : slip == "radziszewski" ? SlipModel::Radziszewski
                                         : SlipModel::ChargeModel;
       m.static_friction = law_parameter(spec, param(e, "radziszewski_static_friction"));
@@ -125,8 +128,7 @@ void set_operating_point(WearModel& model, const OperatingPoint& op) { model.ope
 double impact_volume(const WearModel& m, const ImpactEvent& e, const LinerMaterial& mat) {
   double v = 0;
   if (m.finnie) v += finnie_volume(e.mass_kg, e.normal_speed_m_s, e.tangential_speed_m_s, m.finnie_params, mat);
-  if (m.bitter)
-    v += bitter_volume(e.mass_kg, e.normal_speed_m_s, e.tangential_speed_m_s, m.bitter_params, mat).total();
+  if (m.bitter) v += bitter_volume(e.mass_kg, e.normal_speed_m_s, e.tangential_speed_m_s, m.bitter_params, mat).total();
   if (m.rabinowicz)
     v += rabinowicz_volume(e.mass_kg, e.normal_speed_m_s, e.tangential_speed_m_s, e.diameter_m, m.rabinowicz_params,
                            mat);
@@ -139,8 +141,8 @@ void recession_rates(const WearModel& m, const LinerLoads& loads, const LinerSur
                      RecessionRates& out) {
   const int n = s.n_elements();
   if (loads.n_elements != n)
-    throw std::invalid_argument(fmt::format("recession_rates: loads for {} elements on a surface of {}",
-                                            loads.n_elements, n));
+    throw std::invalid_argument(
+        fmt::format("recession_rates: loads for {} elements on a surface of {}", loads.n_elements, n));
   const size_t un = static_cast<size_t>(n);
   for (auto* v : {&out.total, &out.centrifugal, &out.gravitational, &out.impact}) v->assign(un, 0.0);
   out.slip_speed_m_s = 0;
@@ -155,12 +157,13 @@ void recession_rates(const WearModel& m, const LinerLoads& loads, const LinerSur
     if (m.radziszewski && m.slip != SlipModel::ChargeModel) {
       if (!m.operating.valid)
         throw std::logic_error("recession_rates: the slip model needs an operating point (set_operating_point)");
-      vslip = m.slip == SlipModel::Morrell ? morrell_slip_speed(m.operating)
-                                           : radziszewski_slip_speed(m.operating, m.static_friction, m.slippage_s_per_m);
+      vslip = m.slip == SlipModel::Morrell
+                  ? morrell_slip_speed(m.operating)
+                  : radziszewski_slip_speed(m.operating, m.static_friction, m.slippage_s_per_m);
       out.slip_speed_m_s = vslip;
     }
     const double kr = m.radziszewski ? m.radziszewski_tan_theta / (kPi * H) : 0.0;  // [1/Pa] eq. 5.4
-    const double ka = m.archard ? m.archard_k / H : 0.0;                           // [1/Pa] Archard
+    const double ka = m.archard ? m.archard_k / H : 0.0;                            // [1/Pa] Archard
     for (size_t i = 0; i < un; ++i) {
       if (loads.normal_force_n_per_m[i] == 0 && loads.normal_slip_power_w_per_m[i] == 0 &&
           loads.shear_work_rate_w_per_m[i] == 0)
@@ -194,7 +197,7 @@ void recession_rates(const WearModel& m, const LinerLoads& loads, const LinerSur
   for (size_t i = 0; i < un; ++i) {
     const double va = out.centrifugal[i];
     if (va == 0 && out.impact[i] == 0) continue;  // an unloaded element (its rates are already 0)
-    double share = 0;  // centrifugal share of the normal force
+    double share = 0;                             // centrifugal share of the normal force
     if (split) {
       const double fc = std::max(0.0, loads.centrifugal_force_n_per_m[i]);
       const double fg = std::max(0.0, loads.gravitational_force_n_per_m[i]);

@@ -53,7 +53,7 @@ OperatingPoint operating_point(const Mill& mill, const ChargeSpec& charge, const
       double a = (mill.rotation == Rotation::Ccw ? deg : 180.0 - deg) * kPi / 180.0;
       return a;
     };
-    toe = std::fmod(to_morrell(ind->toe_deg) + 4 * kPi, 2 * kPi);          // about 4 rad
+    toe = std::fmod(to_morrell(ind->toe_deg) + 4 * kPi, 2 * kPi);            // about 4 rad
     shoulder = std::fmod(to_morrell(ind->shoulder_deg) + 4 * kPi, 2 * kPi);  // about 0.8 rad
     if (shoulder > kPi) shoulder -= 2 * kPi;
   } else {
@@ -90,9 +90,9 @@ double radziszewski_slip_speed(const OperatingPoint& op, double mu_s, double del
   // eq. 5.8: angular speed of the contact layer
   const double omega_r = op.omega_rad_s * op.radius_m * (r - zri) / (r * (op.radius_m - zri));
   const double beta = (90.0 - std::clamp(op.face_angle_deg, 0.0, 85.0)) * kPi / 180.0;  // leading face to the shell
-  const double c = omega_r * z * delta * r * r / (std::sin(beta) * (r - zri));  // eq. 5.7 [-]
-  const double mu_k = (1.12 * c + 1.0) / (6.0 * c + 1.0);                      // eq. 5.6
-  return std::max(0.0, (mu_s - mu_k) / (delta * mu_k));                         // eq. 5.5 [m/s]
+  const double c = omega_r * z * delta * r * r / (std::sin(beta) * (r - zri));          // eq. 5.7 [-]
+  const double mu_k = (1.12 * c + 1.0) / (6.0 * c + 1.0);                               // eq. 5.6
+  return std::max(0.0, (mu_s - mu_k) / (delta * mu_k));                                 // eq. 5.5 [m/s]
 }
 
 }  // namespace linerlife

@@ -24,12 +24,12 @@ enum class SlipModel {
 /// What the closed-form slip models need about the mill and its charge.
 struct OperatingPoint {
   bool valid = false;
-  double omega_rad_s = 0;          // [rad/s] mill speed
-  double radius_m = 0;             // [m] r_m, inside the (possibly worn) liners
-  double inner_radius_m = 0;       // [m] r_i, inner surface of the charge (Morrell 1996)
-  double filling = 0;              // [-] J
-  double ball_diameter_m = 0;      // [m] d_b
-  double face_angle_deg = 0;       // [deg] leading face angle of the lifter from the radial (0 without lifter)
+  double omega_rad_s = 0;      // [rad/s] mill speed
+  double radius_m = 0;         // [m] r_m, inside the (possibly worn) liners
+  double inner_radius_m = 0;   // [m] r_i, inner surface of the charge (Morrell 1996)
+  double filling = 0;          // [-] J
+  double ball_diameter_m = 0;  // [m] d_b
+  double face_angle_deg = 0;   // [deg] leading face angle of the lifter from the radial (0 without lifter)
 };
 
 /// Morrell's (1996) empirical toe and shoulder angles [rad] in his frame

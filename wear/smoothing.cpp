@@ -1,13 +1,13 @@
 #include "wear/smoothing.h"
 
-#include <algorithm>
-#include <cmath>
-#include <stdexcept>
+#include <fmt/format.h>
 
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
-#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
 
 #include "geometry/errors.h"
 
@@ -26,11 +26,16 @@ SmoothingMethod smoothing_method_from_name(const std::string& n) {
 
 const char* smoothing_method_name(SmoothingMethod m) {
   switch (m) {
-    case SmoothingMethod::None: return "none";
-    case SmoothingMethod::MovingAverage: return "moving_average";
-    case SmoothingMethod::Csaps: return "csaps";
-    case SmoothingMethod::Tukey: return "tukey";
-    case SmoothingMethod::TukeyCsaps: return "tukey_csaps";
+    case SmoothingMethod::None:
+      return "none";
+    case SmoothingMethod::MovingAverage:
+      return "moving_average";
+    case SmoothingMethod::Csaps:
+      return "csaps";
+    case SmoothingMethod::Tukey:
+      return "tukey";
+    case SmoothingMethod::TukeyCsaps:
+      return "tukey_csaps";
   }
   return "";
 }
@@ -190,7 +195,8 @@ std::vector<TukeyOp> parse_tukey(const std::string& seq, bool& twice) {
   twice = false;
   std::string s;
   for (char c : seq)
-    if (!std::isspace(static_cast<unsigned char>(c))) s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (!std::isspace(static_cast<unsigned char>(c)))
+      s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   const auto comma = s.find(',');
   if (comma != std::string::npos) {
     if (s.substr(comma) != ",TWICE")
@@ -214,9 +220,9 @@ std::vector<TukeyOp> parse_tukey(const std::string& seq, bool& twice) {
       }
       last_r = true;
     } else {
-      throw InputError("wear.smoothing_tukey",
-                       fmt::format("smoothing_tukey = \"{}\": unknown letter '{}'; allowed 3, 5, R, S, H and \",twice\"",
-                                   seq, c));
+      throw InputError(
+          "wear.smoothing_tukey",
+          fmt::format("smoothing_tukey = \"{}\": unknown letter '{}'; allowed 3, 5, R, S, H and \",twice\"", seq, c));
     }
   }
   return ops;
@@ -241,7 +247,9 @@ std::vector<double> apply_ops(const std::vector<double>& y, const std::vector<Tu
         z.swap(next);
         break;
       }
-      case 'H': z = hanning(z, periodic); break;
+      case 'H':
+        z = hanning(z, periodic);
+        break;
     }
   }
   return z;
@@ -270,10 +278,18 @@ SmoothingResult smooth_depth(const std::vector<double>& y, const std::vector<dou
   const size_t n = y.size();
   for (size_t i = 0; i < n; ++i) r.raw_mass += w[i] * y[i];
   switch (spec.method) {
-    case SmoothingMethod::None: r.values = y; break;
-    case SmoothingMethod::MovingAverage: r.values = moving_average(y, spec.window, periodic); break;
-    case SmoothingMethod::Csaps: r.values = csaps(y, spacing, w, spec.csaps_p, periodic); break;
-    case SmoothingMethod::Tukey: r.values = tukey_smooth(y, spec.tukey, periodic); break;
+    case SmoothingMethod::None:
+      r.values = y;
+      break;
+    case SmoothingMethod::MovingAverage:
+      r.values = moving_average(y, spec.window, periodic);
+      break;
+    case SmoothingMethod::Csaps:
+      r.values = csaps(y, spacing, w, spec.csaps_p, periodic);
+      break;
+    case SmoothingMethod::Tukey:
+      r.values = tukey_smooth(y, spec.tukey, periodic);
+      break;
     case SmoothingMethod::TukeyCsaps:
       r.values = csaps(tukey_smooth(y, spec.tukey, periodic), spacing, w, spec.csaps_p, periodic);
       break;

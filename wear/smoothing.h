@@ -24,8 +24,8 @@ enum class SmoothingMethod { None, MovingAverage, Csaps, Tukey, TukeyCsaps };
 
 struct SmoothingSpec {
   SmoothingMethod method = SmoothingMethod::Csaps;
-  double csaps_p = 0.9999;          // [-] MATLAB's csaps smoothing parameter, x in metres of arc length (thesis: 0.9999)
-  int window = 10;                  // [-] moving-average filter length (thesis Fig. 5-18: 10)
+  double csaps_p = 0.9999;  // [-] MATLAB's csaps smoothing parameter, x in metres of arc length (thesis: 0.9999)
+  int window = 10;          // [-] moving-average filter length (thesis Fig. 5-18: 10)
   std::string tukey = "3RSSH,twice";  // Tukey sequence (tukey_smooth)
 };
 
@@ -70,9 +70,9 @@ std::vector<double> csaps(const std::vector<double>& y, const std::vector<double
 std::vector<double> tukey_smooth(const std::vector<double>& y, const std::string& sequence, bool periodic);
 
 struct SmoothingResult {
-  std::vector<double> values;        // smoothed, >= 0, sum w y equal to the raw field's
-  double raw_mass = 0;               // sum w y of the input
-  double relative_change = 0;        // (sum w y_smoothed - raw) / raw before clipping and rescaling
+  std::vector<double> values;          // smoothed, >= 0, sum w y equal to the raw field's
+  double raw_mass = 0;                 // sum w y of the input
+  double relative_change = 0;          // (sum w y_smoothed - raw) / raw before clipping and rescaling
   double relative_change_clipped = 0;  // the same after clipping negatives, before rescaling
 };
 

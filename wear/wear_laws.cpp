@@ -3,9 +3,9 @@
 // more case in recession.cpp.
 #include "wear/wear_laws.h"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "geometry/errors.h"
 
@@ -40,7 +40,8 @@ LawParameter choice(const char* key, const char* help, std::vector<std::string> 
 
 const std::vector<WearLawEntry>& wear_laws() {
   static const std::vector<WearLawEntry> table = {
-      {"abrasion/radziszewski", WearKind::Abrasion,
+      {"abrasion/radziszewski",
+       WearKind::Abrasion,
        "thesis eq. 5.4 (Radziszewski & Tarasiewicz 1993, after Rabinowicz's abrasive wear equation)",
        "volume rate tan(theta) / (pi H) x normal force x slip speed",
        {real("radziszewski_tan_theta", "-",
@@ -50,30 +51,38 @@ const std::vector<WearLawEntry>& wear_laws() {
                {"charge_model", "morrell", "radziszewski"}, "charge_model"),
         real("radziszewski_static_friction", "-", "Static friction mu_s of eq. 5.5 (slip = \"radziszewski\")", 0, 2,
              0.3),
-        real("radziszewski_slippage_s_per_m", "s/m", "Slippage parameter delta of eqs. 5.5-5.7 (slip = \"radziszewski\")",
-             0, 1000, 5.0)}},
-      {"abrasion/archard", WearKind::Abrasion, "Archard (1953), as used by Qiu et al. (2001): V = K S P / H",
+        real("radziszewski_slippage_s_per_m", "s/m",
+             "Slippage parameter delta of eqs. 5.5-5.7 (slip = \"radziszewski\")", 0, 1000, 5.0)}},
+      {"abrasion/archard",
+       WearKind::Abrasion,
+       "Archard (1953), as used by Qiu et al. (2001): V = K S P / H",
        "volume rate K x shear force x sliding speed / H (the shear work rate of LinerLoads)",
        {real("archard_k", "-", "Dimensionless Archard wear coefficient K", 0, 1, 0.02)}},
-      {"impact/finnie", WearKind::Impact, "thesis eq. 5.11 (Finnie 1960, with particle rotation as revised 1967/72)",
+      {"impact/finnie",
+       WearKind::Impact,
+       "thesis eq. 5.11 (Finnie 1960, with particle rotation as revised 1967/72)",
        "ductile cutting: peaks at a low angle, vanishes at normal incidence",
        {real("finnie_cutting_fraction", "-", "Share c of impacts that cut in the idealised way (Finnie: about 0.5)", 0,
              1, 0.5),
         real("finnie_force_ratio", "-", "K, vertical over horizontal force on the cutting tip (Finnie: 2)", 0, 20, 2.0),
         real("finnie_depth_ratio", "-", "psi, contact length over cut depth (Finnie: 2)", 0, 20, 2.0),
         real("finnie_inertia_ratio", "-", "m r^2 / I of the impacting body (solid sphere 2.5)", 0, 20, 2.5, false)}},
-      {"impact/bitter", WearKind::Impact, "thesis eqs. 5.12-5.18 (Bitter 1963, parts I and II)",
+      {"impact/bitter",
+       WearKind::Impact,
+       "thesis eqs. 5.12-5.18 (Bitter 1963, parts I and II)",
        "deformation plus cutting wear above the elastic limit velocity",
        {real("bitter_deformation_j_m3", "J/m3", "Deformation wear factor epsilon (energy per unit volume removed)", 0,
              1e15, 7.0e10),
         real("bitter_cutting_j_m3", "J/m3", "Cutting wear factor Q (the thesis' F_c, energy per unit volume removed)",
              0, 1e15, 5.0e10)}},
-      {"impact/rabinowicz", WearKind::Impact,
+      {"impact/rabinowicz",
+       WearKind::Impact,
        "thesis eqs. 5.19-5.27 (Rabinowicz; friction Yabuki 1999; contact time Hertz; restitution Tabor/Thornton 1997)",
        "energy dissipated in the impact turned into abrasive wear",
-       {real("rabinowicz_tan_theta", "-", "tan(theta) of the impacting surface's asperities (Rabinowicz)", 0, 1,
-             0.1)}},
-      {"impact/sheldon_kanhere", WearKind::Impact, "thesis eq. 5.28 (Sheldon & Kanhere 1972), exponent as thesis §5.4.2",
+       {real("rabinowicz_tan_theta", "-", "tan(theta) of the impacting surface's asperities (Rabinowicz)", 0, 1, 0.1)}},
+      {"impact/sheldon_kanhere",
+       WearKind::Impact,
+       "thesis eq. 5.28 (Sheldon & Kanhere 1972), exponent as thesis §5.4.2",
        "indentation energy balance, V = k D^3 (rho U^2 / H_v)^(n/2)",
        {real("sheldon_kanhere_k", "-", "Dimensionless constant k", 0, 1e3, 0.07),
         real("sheldon_kanhere_exponent", "-", "Velocity exponent n (original 3; thesis 2.35)", 1, 4, 2.35, false),
@@ -123,8 +132,10 @@ std::vector<std::string> parse_law_list(const std::string& text) {
     cur.clear();
   };
   for (char c : text) {
-    if (c == ',' || c == ' ' || c == '\t' || c == '+') flush();
-    else cur += c;
+    if (c == ',' || c == ' ' || c == '\t' || c == '+')
+      flush();
+    else
+      cur += c;
   }
   flush();
   return out;

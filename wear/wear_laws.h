@@ -16,9 +16,9 @@ enum class WearKind { Abrasion, Impact };
 
 /// One parameter of a law, as the [wear] section sees it.
 struct LawParameter {
-  std::string key;    // [wear] key, e.g. "finnie_cutting_fraction"
-  std::string unit;   // "-", "J/m3", "s/m"
-  std::string help;   // one line, with its source
+  std::string key;   // [wear] key, e.g. "finnie_cutting_fraction"
+  std::string unit;  // "-", "J/m3", "s/m"
+  std::string help;  // one line, with its source
   double lo = 0, hi = 0;
   bool lo_open = true, hi_open = false;
   double default_value = 0;
@@ -27,7 +27,7 @@ struct LawParameter {
 };
 
 struct WearLawEntry {
-  std::string name;    // "abrasion/radziszewski", ...
+  std::string name;  // "abrasion/radziszewski", ...
   WearKind kind;
   std::string source;  // where the formula comes from (thesis equation and original paper)
   std::string description;

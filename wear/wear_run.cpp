@@ -1,11 +1,11 @@
 #include "wear/wear_run.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
-
-#include <fmt/format.h>
 
 #include "geometry/errors.h"
 #include "geometry/metrics.h"
@@ -50,7 +50,8 @@ double max_recession(const LinerSurface& initial, const LinerSurface& worn, cons
     for (int i = worn.segment_begin[k]; i < worn.segment_begin[k + 1]; ++i) {
       const Eigen::Vector2d& p = worn.nodes[i];
       double d = std::numeric_limits<double>::max();
-      for (int j = b0; j < e0; ++j) d = std::min(d, point_segment_distance(p, initial.nodes[j], initial.nodes[(j + 1) % n0]));
+      for (int j = b0; j < e0; ++j)
+        d = std::min(d, point_segment_distance(p, initial.nodes[j], initial.nodes[(j + 1) % n0]));
       worst = std::max(worst, d);  // wear only removes material: every moved node lies inside the old body
     }
   }
@@ -95,17 +96,17 @@ WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry) {
       throw SimulationError(fmt::format("the charge model \"{}\" returned loads for {} elements on a surface of {}",
                                         entry.name, charge.loads.n_elements, s.n_elements()));
     if (wm.needs_impacts() && !charge.loads.has_impacts)
-      throw SimulationError(fmt::format("the charge model \"{}\" returned no impacts although its table entry says "
-                                        "it resolves them",
-                                        entry.name));
-    if (wm.needs_operating_point())
-      set_operating_point(wm, operating_point(in.mill, in.charge, &charge.indicators, s));
+      throw SimulationError(
+          fmt::format("the charge model \"{}\" returned no impacts although its table entry says "
+                      "it resolves them",
+                      entry.name));
+    if (wm.needs_operating_point()) set_operating_point(wm, operating_point(in.mill, in.charge, &charge.indicators, s));
   };
 
   // ---- rates on the current surface
-  LinerLoads loads;                  // on `surface`; in "one" mode averaged onto the representatives
-  std::vector<double> elem_rate;     // [m/s] amplified, per element of the full ring
-  std::vector<double> node_rate;     // [m/s] amplified, per node; zero outside the representatives in "one" mode
+  LinerLoads loads;               // on `surface`; in "one" mode averaged onto the representatives
+  std::vector<double> elem_rate;  // [m/s] amplified, per element of the full ring
+  std::vector<double> node_rate;  // [m/s] amplified, per node; zero outside the representatives in "one" mode
   PartRates parts;
   const std::vector<int> reps = representative_segments(surface);
   const std::vector<int> counts = design_counts(surface);
@@ -116,7 +117,7 @@ WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry) {
   };
   const int rep_lo = *std::min_element(reps.begin(), reps.end());
   const int rep_hi = *std::max_element(reps.begin(), reps.end());
-  double max_node_rate = 0;          // [m/s]
+  double max_node_rate = 0;  // [m/s]
   auto update_rates = [&]() {
     recession_rates(wm, loads, surface, in.material, res.rates);  // on `surface` (res.rates_surface is set at the end)
     const int n = surface.n_elements();
@@ -179,7 +180,8 @@ WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry) {
   std::vector<double> depth;
   double cum_cf = 0, cum_gf = 0, cum_im = 0;  // [m2 per m] commanded, up to the last remesh
   std::vector<double> per_segment(static_cast<size_t>(surface.segments), 0.0);  // [m2 per m] likewise
-  int since = 0;  // steps since the last remesh: their wear is rate x since x dt (the rates are constant between remeshes)
+  int since =
+      0;  // steps since the last remesh: their wear is rate x since x dt (the rates are constant between remeshes)
   double t = 0;
 
   res.snapshots.push_back({0.0, surface});
@@ -196,17 +198,18 @@ WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry) {
     hs.gravitational_kg_per_m.push_back(rho * (cum_gf + parts.gf * tau));
     hs.impact_kg_per_m.push_back(rho * (cum_im + parts.im * tau));
     hs.total_kg_per_m.push_back(rho * (cum_cf + cum_gf + cum_im + (parts.cf + parts.gf + parts.im) * tau));
-    for (size_t k = 0; k < per_segment.size(); ++k) hs.per_segment_kg_per_m.push_back(rho * (per_segment[k] + parts.segment[k] * tau));
+    for (size_t k = 0; k < per_segment.size(); ++k)
+      hs.per_segment_kg_per_m.push_back(rho * (per_segment[k] + parts.segment[k] * tau));
   };
   record();
 
   const double max_step_depth = 0.5 * h;
   auto check_step = [&]() {
     if (dt * max_node_rate > max_step_depth)
-      throw SimulationError(fmt::format(
-          "one wear step of {:.4g} s removes up to {:.3g} m, more than half the element size ({} m): the "
-          "amplification (abrasion {:g}, impact {:g}) is too large for the step; lower it or the time step",
-          dt, dt * max_node_rate, h, ws.amplification_abrasion, ws.amplification_impact));
+      throw SimulationError(
+          fmt::format("one wear step of {:.4g} s removes up to {:.3g} m, more than half the element size ({} m): the "
+                      "amplification (abrasion {:g}, impact {:g}) is too large for the step; lower it or the time step",
+                      dt, dt * max_node_rate, h, ws.amplification_abrasion, ws.amplification_impact));
   };
   check_step();
   for (int step = 1; step <= n_steps; ++step) {
@@ -227,7 +230,8 @@ WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry) {
         const int b = one ? surface.segment_begin[rep_lo] : 0;
         const int e = one ? surface.segment_begin[rep_hi + 1] : surface.n_nodes();  // exclusive
         const int m = e - b;
-        std::vector<double> y(depth.begin() + b, depth.begin() + e), sp(static_cast<size_t>(m)), w(static_cast<size_t>(m));
+        std::vector<double> y(depth.begin() + b, depth.begin() + e), sp(static_cast<size_t>(m)),
+            w(static_cast<size_t>(m));
         for (int q = 0; q < m; ++q) {
           const int i = b + q;
           sp[q] = surface.length[i];
@@ -253,9 +257,10 @@ WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry) {
         }
       } catch (const std::runtime_error& e) {
         // the geometry could not be repaired (e.g. a steep wear step at a segment edge)
-        throw SimulationError(fmt::format("the worn profile could not be remeshed at t = {:.3f} s ({}); smooth the "
-                                          "wear ([wear] smoothing) or remesh more often",
-                                          t, e.what()));
+        throw SimulationError(
+            fmt::format("the worn profile could not be remeshed at t = {:.3f} s ({}); smooth the "
+                        "wear ([wear] smoothing) or remesh more often",
+                        t, e.what()));
       }
       ++(fast ? res.fast_remeshes : res.remeshes);
       const double next_area = one ? copies_area(next) : ring_area(next);
@@ -273,7 +278,8 @@ WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry) {
       for (size_t k = 0; k < per_segment.size(); ++k) per_segment[k] += parts.segment[k] * tau;
       since = 0;
       res.remesh_wall_s += seconds_since(t0);
-      const bool redrive = ws.feedback && (ws.feedback_every_steps == 0 || steps_since_drive >= ws.feedback_every_steps);
+      const bool redrive =
+          ws.feedback && (ws.feedback_every_steps == 0 || steps_since_drive >= ws.feedback_every_steps);
       const LinerSurface previous = std::move(surface);
       surface = std::move(next);
       while (next_snapshot < planned.size() && planned[next_snapshot] <= t + 1e-12) {

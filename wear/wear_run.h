@@ -35,13 +35,13 @@
 namespace linerlife {
 
 struct WearRunInput {
-  Mill mill;                 // speed resolved; `rotation` is the direction the mill turns in this run
+  Mill mill;  // speed resolved; `rotation` is the direction the mill turns in this run
   ChargeSpec charge;
-  ModelSpec model;           // time_step_s is the wear step
-  LinerSurface surface;      // the liner at the start
+  ModelSpec model;       // time_step_s is the wear step
+  LinerSurface surface;  // the liner at the start
   LinerMaterial material;
   WearSpec wear;
-  RemeshOptions remesh;      // element_size_m of the liner
+  RemeshOptions remesh;  // element_size_m of the liner
   unsigned long long seed = 1;
   std::function<void(double)> progress;  // called with the fraction done (0..1); may be empty
 };
@@ -53,8 +53,8 @@ struct ProfileSnapshot {
 
 /// Cumulative wear asked for by the laws (amplified), per metre of mill length.
 struct WearHistory {
-  std::vector<double> time_s;              // [s] simulated
-  std::vector<double> total_kg_per_m;      // [kg/m]
+  std::vector<double> time_s;          // [s] simulated
+  std::vector<double> total_kg_per_m;  // [kg/m]
   std::vector<double> centrifugal_kg_per_m, gravitational_kg_per_m, impact_kg_per_m;
   int segments = 0;
   std::vector<double> per_segment_kg_per_m;  // [kg/m] rows = entries of time_s, columns = segments (row-major)
@@ -64,26 +64,26 @@ struct WearRunResult {
   LinerSurface initial, final;
   std::vector<ProfileSnapshot> snapshots;  // the initial profile, WearSpec::snapshots between, the final one
   WearHistory history;
-  RecessionRates rates;         // the last rates (calibrated, not amplified), on `rates_surface`
+  RecessionRates rates;  // the last rates (calibrated, not amplified), on `rates_surface`
   LinerSurface rates_surface;
-  ChargeResult charge;          // the last charge drive
+  ChargeResult charge;  // the last charge drive
   // Mass per metre of mill length [kg/m]
   double liner_mass_initial_kg_per_m = 0;
   double liner_mass_final_kg_per_m = 0;
-  double mass_loss_kg_per_m = 0;               // density x area the profile lost (= initial - final mass)
-  double mass_loss_centrifugal_kg_per_m = 0;   // mass_loss split in proportion to the laws' contributions
+  double mass_loss_kg_per_m = 0;              // density x area the profile lost (= initial - final mass)
+  double mass_loss_centrifugal_kg_per_m = 0;  // mass_loss split in proportion to the laws' contributions
   double mass_loss_gravitational_kg_per_m = 0;
   double mass_loss_impact_kg_per_m = 0;
-  double commanded_mass_kg_per_m = 0;          // what the laws asked for (amplified)
-  double mass_balance_rel_error = 0;           // mass_loss / commanded - 1 (remesh discretisation)
-  double max_recession_m = 0;                  // [m] deepest point of the final profile below the initial one
-  double smoothing_max_rel_change = 0;         // largest |mass change| a smoother needed corrected (before rescaling)
+  double commanded_mass_kg_per_m = 0;   // what the laws asked for (amplified)
+  double mass_balance_rel_error = 0;    // mass_loss / commanded - 1 (remesh discretisation)
+  double max_recession_m = 0;           // [m] deepest point of the final profile below the initial one
+  double smoothing_max_rel_change = 0;  // largest |mass change| a smoother needed corrected (before rescaling)
   int steps = 0, charge_drives = 0;
-  int remeshes = 0;       // through geometry's remesh() (CGAL)
-  int fast_remeshes = 0;  // by recede()'s fast path
-  double step_s = 0;                           // [s] the wear step
+  int remeshes = 0;                                                          // through geometry's remesh() (CGAL)
+  int fast_remeshes = 0;                                                     // by recede()'s fast path
+  double step_s = 0;                                                         // [s] the wear step
   double simulated_s = 0, wall_s = 0, charge_wall_s = 0, remesh_wall_s = 0;  // [s]
-  double realtime_ratio = 0;                   // simulated_s / wall_s
+  double realtime_ratio = 0;                                                 // simulated_s / wall_s
   bool worn_through = false;
   std::string message;
 };

@@ -1,10 +1,9 @@
 // `linerlife wear`: bad input refused at setup with exit 2 and no output; the
 // run itself once a charge model is in the table (issue 4 §4, §6).
+#include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <regex>
-
-#include <catch2/catch.hpp>
 
 #include "charge/charge_model.h"
 #include "cli_runner.h"

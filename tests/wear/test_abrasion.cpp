@@ -1,7 +1,6 @@
 // Slip models of thesis §5.4.1 (eqs. 5.5-5.10) and Morrell's charge shape.
-#include <cmath>
-
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "geometry/build_liner_surface.h"
 #include "wear/slip_models.h"
@@ -104,5 +103,6 @@ TEST_CASE("the operating point of the Qiu mill", "[wear][slip]") {
   cw.shoulder_deg = 180 - 45;
   Mill cwm = mill;
   cwm.rotation = Rotation::Cw;
-  CHECK(operating_point(cwm, c, &cw, s).inner_radius_m == Approx(operating_point(mill, c, &ccw, s).inner_radius_m).epsilon(1e-9));
+  CHECK(operating_point(cwm, c, &cw, s).inner_radius_m ==
+        Approx(operating_point(mill, c, &ccw, s).inner_radius_m).epsilon(1e-9));
 }

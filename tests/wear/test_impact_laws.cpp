@@ -1,8 +1,7 @@
 // Impact wear laws (thesis eqs. 5.11-5.28): one hand-computed case each, the
 // angle dependence of thesis Fig. 5-7, and analytic limits.
-#include <cmath>
-
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "wear/impact_laws.h"
 #include "wear/impact_submodels.h"
@@ -48,8 +47,10 @@ TEST_CASE("Finnie (1960) without rotation reproduces his original two branches",
   const double K = p.force_ratio, psi = p.depth_ratio, U = 7, M = 0.3, H = 1e9;
   for (double a_deg : {3.0, 10.0, 18.0, 18.4, 18.5, 30.0, 60.0, 89.0}) {
     const double a = deg(a_deg);
-    const double f = std::tan(a) <= K / 6 ? std::sin(2 * a) - 6 / K * std::pow(std::sin(a), 2) : K * std::pow(std::cos(a), 2) / 6;
-    CHECK(finnie_volume(M, U * std::sin(a), U * std::cos(a), p, m) == Approx(M * U * U / (H * psi * K) * f).epsilon(1e-10));
+    const double f =
+        std::tan(a) <= K / 6 ? std::sin(2 * a) - 6 / K * std::pow(std::sin(a), 2) : K * std::pow(std::cos(a), 2) / 6;
+    CHECK(finnie_volume(M, U * std::sin(a), U * std::cos(a), p, m) ==
+          Approx(M * U * U / (H * psi * K) * f).epsilon(1e-10));
   }
 }
 
@@ -86,7 +87,7 @@ TEST_CASE("erosion against impact angle: Finnie peaks low and vanishes at 90 deg
 }
 
 TEST_CASE("Bitter: hand-computed deformation and cutting wear on both branches", "[wear][impact][bitter]") {
-  LinerMaterial m;  // y = 1 GPa, E = 210 GPa, nu = 0.29, rho_b = 7800
+  LinerMaterial m;       // y = 1 GPa, E = 210 GPa, nu = 0.29, rho_b = 7800
   const BitterParams p;  // eps = 7e10, Q = 5e10 J/m3
   const double U = 10, M = 1;
   // K = 0.1355292 m/s (test_impact_submodels); C = 0.288/1e9 x (7800/1e9)^0.25 = 1.522005e-11
@@ -117,7 +118,8 @@ TEST_CASE("Bitter: hand-computed deformation and cutting wear on both branches",
     const double vn = U * std::sin(deg(5)), vt = U * std::cos(deg(5)), k = bitter_elastic_limit_speed(m);
     const double u = 0.288 / 1e9 * std::pow(7800 / 1e9, 0.25) * p.cutting_j_m3 * std::pow(vn - k, 2) / std::sqrt(vn);
     const double xend = vt - 2 * u;
-    CHECK(bitter_volume(M, vn, vt, p, m).cutting_m3 == Approx(M * (vt * vt - xend * xend) / (2 * p.cutting_j_m3)).epsilon(1e-12));
+    CHECK(bitter_volume(M, vn, vt, p, m).cutting_m3 ==
+          Approx(M * (vt * vt - xend * xend) / (2 * p.cutting_j_m3)).epsilon(1e-12));
   }
 }
 
@@ -134,7 +136,7 @@ TEST_CASE("Rabinowicz: hand-computed volume and its limits", "[wear][impact][rab
 }
 
 TEST_CASE("Sheldon-Kanhere: hand-computed volume, exponent and speed choice", "[wear][impact][sheldon]") {
-  const LinerMaterial m;  // HV = 1.05 x 350 BHN = 3.603944e9 Pa, rho_b = 7800
+  const LinerMaterial m;   // HV = 1.05 x 350 BHN = 3.603944e9 Pa, rho_b = 7800
   SheldonKanhereParams p;  // k = 0.07, n = 2.35, normal speed
   // M = 1 kg, vn = 5: D^3 = 6 / (pi 7800) = 2.448538e-4 m3, rho U^2 / HV = 195000 / 3.603944e9 = 5.410739e-5,
   // (5.410739e-5)^1.175 = 9.695640e-6, V = 0.07 x 2.448538e-4 x 9.695640e-6 = 1.661810e-10 m3
@@ -147,8 +149,10 @@ TEST_CASE("Sheldon-Kanhere: hand-computed volume, exponent and speed choice", "[
   p.exponent = 3;
   p.normal_speed = true;
   const double D3 = 6 / (M_PI * 7800);
-  CHECK(sheldon_kanhere_volume(1, 5, 0, p, m) == Approx(0.07 * D3 * 125 * std::pow(7800 / m.vickers_pa(), 1.5)).epsilon(1e-12));
+  CHECK(sheldon_kanhere_volume(1, 5, 0, p, m) ==
+        Approx(0.07 * D3 * 125 * std::pow(7800 / m.vickers_pa(), 1.5)).epsilon(1e-12));
   // velocity exponent: doubling the speed multiplies the wear by 2^n
   p.exponent = 2.35;
-  CHECK(sheldon_kanhere_volume(1, 10, 0, p, m) / sheldon_kanhere_volume(1, 5, 0, p, m) == Approx(std::pow(2, 2.35)).epsilon(1e-12));
+  CHECK(sheldon_kanhere_volume(1, 10, 0, p, m) / sheldon_kanhere_volume(1, 5, 0, p, m) ==
+        Approx(std::pow(2, 2.35)).epsilon(1e-12));
 }

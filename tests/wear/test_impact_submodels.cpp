@@ -1,8 +1,7 @@
 // Impact sub-models (thesis eqs. 5.13, 5.20-5.27): analytic limits, the shapes
 // of thesis Figs. 5-5 and 5-6, and hand-computed values.
-#include <cmath>
-
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "wear/impact_submodels.h"
 
@@ -59,12 +58,14 @@ TEST_CASE("Hertz contact time: two forms of thesis eq. 5.21 agree and scale as v
   const double R = 0.05;
   for (double v : {0.5, 2.0, 10.0}) {
     // rho form: 2.94 (5 pi rho / (4 E*))^(2/5) R v^(-1/5)
-    const double rho_form = 2.94 * std::pow(5 * M_PI * 7800 / (4 * m.contact_modulus_pa()), 0.4) * R * std::pow(v, -0.2);
+    const double rho_form =
+        2.94 * std::pow(5 * M_PI * 7800 / (4 * m.contact_modulus_pa()), 0.4) * R * std::pow(v, -0.2);
     CHECK(hertz_contact_time(v, R, m) == Approx(rho_form).epsilon(1e-12));
   }
   CHECK(hertz_contact_time(32, R, m) / hertz_contact_time(1, R, m) == Approx(0.5).epsilon(1e-12));  // 32^(-1/5)
   // by hand, d = 0.1 m, v = 4 m/s: m = 7800 pi 0.1^3 / 6 = 4.084070 kg,
-  // delta = (15 x 4.084070 x 16 / (16 x 1.146413e11 x sqrt(0.05)))^0.4 = 3.559125e-4 m, t = 2.94 delta / 4 = 2.615957e-4 s
+  // delta = (15 x 4.084070 x 16 / (16 x 1.146413e11 x sqrt(0.05)))^0.4 = 3.559125e-4 m, t = 2.94 delta / 4
+  // = 2.615957e-4 s
   CHECK(hertz_contact_time(4, R, m) == Approx(2.615957e-4).epsilon(1e-6));
 }
 

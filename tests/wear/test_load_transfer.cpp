@@ -1,8 +1,7 @@
 // Carrying loads between surfaces and onto representative liners (Table B.1
 // LinerComputation).
-#include <cmath>
-
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "geometry/build_liner_surface.h"
 #include "geometry/remesh.h"
@@ -91,7 +90,8 @@ TEST_CASE("carrying loads onto a remeshed surface keeps every segment's totals",
   const LinerLoads t = transfer_loads(l, s, w);
   REQUIRE(t.n_elements == w.n_elements());
   for (int k : {63, 0, 1, 2}) {
-    CHECK(segment_sum(w, t.normal_force_n_per_m, k) == Approx(segment_sum(s, l.normal_force_n_per_m, k)).epsilon(1e-12));
+    CHECK(segment_sum(w, t.normal_force_n_per_m, k) ==
+          Approx(segment_sum(s, l.normal_force_n_per_m, k)).epsilon(1e-12));
     CHECK(segment_sum(w, t.normal_slip_power_w_per_m, k) ==
           Approx(segment_sum(s, l.normal_slip_power_w_per_m, k)).epsilon(1e-12));
   }

@@ -1,9 +1,8 @@
 // recede(): the fast path gives remesh()'s surface, and hands over to it
 // where it does not apply.
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
-
-#include <catch2/catch.hpp>
 
 #include "geometry/build_liner_surface.h"
 #include "geometry/metrics.h"
@@ -51,7 +50,8 @@ TEST_CASE("recede: small smooth steps take the fast path and match remesh()", "[
     CHECK(f.removed_area_m2 == Approx(r.removed_area_m2).epsilon(1e-9));
     REQUIRE(f.surface.n_nodes() == r.surface.n_nodes());
     double worst = 0;
-    for (int i = 0; i < r.surface.n_nodes(); ++i) worst = std::max(worst, (f.surface.nodes[i] - r.surface.nodes[i]).norm());
+    for (int i = 0; i < r.surface.n_nodes(); ++i)
+      worst = std::max(worst, (f.surface.nodes[i] - r.surface.nodes[i]).norm());
     CHECK(worst < 1e-9);
   }
 }

@@ -1,9 +1,8 @@
 // From loads to recession rates: hand-computed rates, the split into
 // centrifugal, gravitational and impact parts, calibration, and the inputs
 // refused at setup.
-#include <cmath>
-
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "geometry/build_liner_surface.h"
 #include "geometry/errors.h"
@@ -164,9 +163,9 @@ TEST_CASE("impact wear per element: rate x volume per impact, over the element l
   CHECK(amplified_rate(ma, r, 77) == Approx(1e7 * r.impact[77]).epsilon(1e-15));
   // two impact laws add up
   const WearModel both = make_wear_model(spec_of({"impact/sheldon_kanhere", "impact/bitter"}), kFull);
-  CHECK(impact_volume(both, e, mat) ==
-        Approx(sheldon_kanhere_volume(1, 5, 0, SheldonKanhereParams{}, mat) + bitter_volume(1, 5, 0, BitterParams{}, mat).total())
-            .epsilon(1e-12));
+  CHECK(impact_volume(both, e, mat) == Approx(sheldon_kanhere_volume(1, 5, 0, SheldonKanhereParams{}, mat) +
+                                              bitter_volume(1, 5, 0, BitterParams{}, mat).total())
+                                           .epsilon(1e-12));
 }
 
 TEST_CASE("bad wear input is refused at setup naming the key", "[wear][recession][input]") {
@@ -220,10 +219,13 @@ TEST_CASE("every law declares its parameters with unit, range and a default insi
     for (const LawParameter& p : e.parameters) {
       CHECK_FALSE(p.unit.empty());
       CHECK_FALSE(p.help.empty());
-      if (p.choices.empty()) CHECK_NOTHROW(law_parameter(WearSpec{}, p));
-      else CHECK(law_choice(WearSpec{}, p) == p.default_choice);
+      if (p.choices.empty())
+        CHECK_NOTHROW(law_parameter(WearSpec{}, p));
+      else
+        CHECK(law_choice(WearSpec{}, p) == p.default_choice);
     }
   }
-  CHECK(parse_law_list("abrasion/archard, impact/finnie") == std::vector<std::string>{"abrasion/archard", "impact/finnie"});
+  CHECK(parse_law_list("abrasion/archard, impact/finnie") ==
+        std::vector<std::string>{"abrasion/archard", "impact/finnie"});
   CHECK(parse_law_list("none").empty());
 }

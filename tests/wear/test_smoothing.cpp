@@ -1,10 +1,9 @@
 // Profile smoothing (thesis §5.8): moving average, csaps, Tukey's smoothers,
 // and the mass the smoothing keeps.
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <numeric>
 #include <random>
-
-#include <catch2/catch.hpp>
 
 #include "geometry/errors.h"
 #include "wear/smoothing.h"

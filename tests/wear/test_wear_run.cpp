@@ -4,9 +4,8 @@
 // wear; twice the amplification gives twice one step's wear; feedback
 // re-drives the charge on the worn surface; a too large amplification is
 // detected.
-#include <cmath>
-
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "geometry/build_liner_surface.h"
 #include "geometry/errors.h"
@@ -164,8 +163,7 @@ TEST_CASE("wear run: the mass lost is what the profile lost", "[wear][run]") {
   // at most the fastest element's amplified rate over the run (plus the change of the rates as the profile wears)
   const double abrasion = 0.02 * 1000 * 0.1 / (M_PI * 350 * 9.80665e6) / 0.0125 * 2e5;
   double fastest = 0;
-  for (size_t i = 0; i < r.rates.total.size(); ++i)
-    fastest = std::max(fastest, 2e5 * r.rates.total[i]);
+  for (size_t i = 0; i < r.rates.total.size(); ++i) fastest = std::max(fastest, 2e5 * r.rates.total[i]);
   CHECK(r.max_recession_m > 0.5 * abrasion * r.simulated_s);
   CHECK(r.max_recession_m < 1.5 * fastest * r.simulated_s);
   CHECK(r.realtime_ratio > 0);
@@ -237,9 +235,9 @@ TEST_CASE("wear run: smoothing keeps the mass and the bookkeeping", "[wear][run]
   in.wear.smoothing.method = SmoothingMethod::Csaps;
   const WearRunResult r = run_wear(in, kFake);
   CHECK(r.smoothing_max_rel_change < 0.005);
-  CHECK(r.mass_loss_kg_per_m ==
-        Approx(metrics(r.initial, Rotation::Ccw, 7800).mass_kg_per_m - metrics(r.final, Rotation::Ccw, 7800).mass_kg_per_m)
-            .epsilon(1e-9));
+  CHECK(r.mass_loss_kg_per_m == Approx(metrics(r.initial, Rotation::Ccw, 7800).mass_kg_per_m -
+                                       metrics(r.final, Rotation::Ccw, 7800).mass_kg_per_m)
+                                    .epsilon(1e-9));
   CHECK(std::abs(r.mass_balance_rel_error) < 0.01);
 }
 
