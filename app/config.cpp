@@ -117,6 +117,7 @@ const Schema& config_schema() {
     add_charge_keys(s);
     add_liner_keys(s);
     add_model_keys(s);
+    add_wear_keys(s);
     add_forecast_keys(s);
     return s;
   }();
@@ -230,6 +231,12 @@ void check_and_resolve(Config& c) {
               fmt::format("ball_diameter_m = {} m is larger than the spacing between lifters at the plate ({:.4g} m "
                           "for {} rows): the media cannot sit between the lifters",
                           c.charge.ball_diameter_m, gap, L.segments));
+  }
+  // Wear: materials, laws and their parameters.
+  try {
+    resolve_wear_config(c);
+  } catch (const InputError& e) {
+    fail_at(c, e.key(), e.what());
   }
 }
 

@@ -14,6 +14,8 @@
 #include "forecast/forecast_spec.h"
 #include "geometry/lifter_design.h"
 #include "geometry/mill.h"
+#include "wear/liner_material.h"
+#include "wear/wear_spec.h"
 
 namespace linerlife {
 
@@ -31,6 +33,9 @@ struct Config {
   std::string pattern = "uniform";
   std::optional<double> low_lifter_height_m, low_lifter_top_width_m;
   ModelSpec model;
+  WearSpec wear;               // laws resolved from wear_laws_text by resolve_wear_config()
+  std::string wear_laws_text = "abrasion/radziszewski, impact/sheldon_kanhere";  // [wear] laws as given
+  LinerMaterial material;      // density and hardness from [liner], ball density from [charge], the rest from [wear]
   ForecastSpec forecast;
 
   std::map<std::string, int> key_lines;  // "section.key" -> line in the source (1-based)
@@ -86,6 +91,12 @@ void add_mill_keys(Schema& s);
 void add_charge_keys(Schema& s);
 void add_liner_keys(Schema& s);
 void add_model_keys(Schema& s);
+void add_wear_keys(Schema& s);
+
+/// Fills Config::material from [liner], [charge] and [wear], parses the laws
+/// and checks the wear specification (config_schema_wear.cpp). Throws
+/// InputError naming the key.
+void resolve_wear_config(Config& c);
 void add_forecast_keys(Schema& s);
 
 /// Parses and checks a configuration: TOML syntax, unknown sections and keys,
