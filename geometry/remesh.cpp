@@ -11,6 +11,7 @@
 #include <CGAL/Polygon_with_holes_2.h>
 #include <fmt/format.h>
 
+#include "geometry/errors.h"
 #include "geometry/metrics.h"
 #include "geometry/mill.h"
 #include "geometry/resample.h"
@@ -129,7 +130,11 @@ std::vector<V> remesh_chain(const LinerSurface& s, const std::vector<double>& de
   // Old body: surface from b to e, then the shell arc back.
   const double th0 = s.segment_start_rad(k), th1 = s.segment_start_rad(k + 1);
   std::vector<V> body;
-  for (int i = b; i <= e; ++i) body.push_back(s.nodes[i % n]);
+  for (int i = b; i <= e; ++i) {
+    // repeated vertices (a zero-length element) make CGAL call the polygon non-simple
+    const V& q = s.nodes[i % n];
+    if (body.empty() || (q - body.back()).norm() > 1e-12 * h) body.push_back(q);
+  }
   const int narc = std::max(2, static_cast<int>(std::ceil((th1 - th0) * R / h)));
   for (int j = narc; j >= 0; --j) {
     const double th = th0 + (th1 - th0) * j / narc;
@@ -138,7 +143,10 @@ std::vector<V> remesh_chain(const LinerSurface& s, const std::vector<double>& de
   Polygon body_poly;
   for (const V& p : body) body_poly.push_back(to_cgal(p));
   if (!body_poly.is_simple())
-    throw std::runtime_error(fmt::format("remesh: the liner body of segment {} is not a simple polygon", k));
+    throw SimulationError(fmt::format("remesh: the liner profile of segment {} crosses itself before this remesh, so "
+                                      "the worn body is undefined; recede in smaller steps (remesh more often) or "
+                                      "smooth the recession field",
+                                      k));
   if (body_poly.orientation() == CGAL::CLOCKWISE) body_poly.reverse_orientation();
 
   std::vector<Polygon> swept;
@@ -163,7 +171,7 @@ std::vector<V> remesh_chain(const LinerSurface& s, const std::vector<double>& de
         keep = static_cast<int>(j);
         break;
       }
-  if (keep < 0) throw std::runtime_error(fmt::format("remesh: segment {} lost its contact with the shell", k));
+  if (keep < 0) throw SimulationError(fmt::format("remesh: segment {} lost its contact with the shell", k));
   for (size_t j = 0; j < pieces.size(); ++j)
     if (static_cast<int>(j) != keep) detached += std::abs(CGAL::to_double(pieces[j].outer_boundary().area()));
 
@@ -181,7 +189,7 @@ std::vector<V> remesh_chain(const LinerSurface& s, const std::vector<double>& de
       start = j + 1;
       break;
     }
-  if (start < 0) throw std::runtime_error(fmt::format("remesh: no liner surface left in segment {}", k));
+  if (start < 0) throw SimulationError(fmt::format("remesh: no liner surface left in segment {}", k));
   for (int j = start; !on_shell(j); ++j) chain.push_back(ring[j % m]);
   std::reverse(chain.begin(), chain.end());  // anticlockwise round the axis
   // Snap the chain ends onto the segment's radial edges (they lie there up
