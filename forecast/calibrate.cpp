@@ -159,6 +159,20 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
   return res;
 }
 
+std::vector<ProfileRecord> fitted_profiles(const CalibrationProblem& p, const std::vector<double>& params) {
+  Fit fit{p};
+  auto provider = p.make_provider(params);
+  const ForecastResult f = run_forecast(p.input, *provider, fit.fit_spec());
+  std::vector<ProfileRecord> out;
+  for (const auto& m : p.measured.snapshots) {
+    const ProfileRecord* rec = &f.profiles.back();
+    for (const auto& pr : f.profiles)
+      if (std::abs(pr.hours - m.hours) <= 1e-6 * std::max(1.0, m.hours)) rec = &pr;
+    out.push_back(*rec);
+  }
+  return out;
+}
+
 LifeQuantiles life_quantiles(const std::vector<double>& params, const Eigen::MatrixXd& cov,
                              const ProviderFactory& make_provider, const ForecastInput& input, const ForecastSpec& spec) {
   LifeQuantiles q;

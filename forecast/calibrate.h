@@ -46,6 +46,10 @@ struct CalibrationResult {
 
 CalibrationResult calibrate(const CalibrationProblem& p);
 
+/// The forecast profiles of segment 0 at the measured hours for `params`
+/// (mill frame), as the fit compares them.
+std::vector<ProfileRecord> fitted_profiles(const CalibrationProblem& p, const std::vector<double>& params);
+
 /// Signed distances [m] of measured points (mill frame) to a simulated
 /// profile chain: positive where the measured surface stands on the charge
 /// side of the simulated one (less worn than simulated).
