@@ -23,8 +23,8 @@ class ChargeWearRate : public RateProvider {
   RateSample sample(const LinerSurface& s, double revolutions) override;
 
   /// The number of drives so far (the next drive's seed offset).
-  long long drives() const { return drives_; }
-  void set_drives(long long n) { drives_ = n; }
+  long long drive_count() const override { return drives_; }
+  void set_drive_count(long long n) override { drives_ = n; }
 
  private:
   Mill mill_;

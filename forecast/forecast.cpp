@@ -215,9 +215,9 @@ struct Criteria {
 /// The forecast's moving parts, shared by the three methods.
 class Life {
  public:
-  Life(const ForecastInput& in, RateProvider& rates, const ForecastSpec& spec, const ProgressFn& progress)
-      : in_(in), rates_(rates), spec_(spec), progress_(progress), cell_(*in.initial, pattern_period(*in.initial)),
-        crit_{&spec} {
+  Life(const ForecastInput& in, RateProvider& rates, const ForecastSpec& spec, const ForecastHooks& hooks)
+      : in_(in), rates_(rates), spec_(spec), hooks_(hooks), progress_(hooks.progress),
+        cell_(*in.initial, pattern_period(*in.initial)), crit_{&spec} {
     opt_.element_size_m = in.element_size_m;
     remesh_depth_ = spec.remesh_depth_m > 0 ? spec.remesh_depth_m : 0.5 * in.element_size_m;
     y_.assign(static_cast<size_t>(cell_.size()), 0.0);
@@ -240,18 +240,41 @@ class Life {
 
   ForecastResult run() {
     const auto t0 = std::chrono::steady_clock::now();
-    drive(spec_.revolutions_per_drive);
-    record(0.0);
-    switch (spec_.method) {
-      case ForecastMethod::Ode: run_ode(); break;
-      case ForecastMethod::Euler: run_explicit(spec_.euler_step_h * 3600.0, spec_.revolutions_per_drive, false); break;
-      case ForecastMethod::Amplify: {
-        const double period_s = 60.0 / in_.speed_rpm;
-        run_explicit(spec_.amplify_revolutions * period_s * spec_.amplification, spec_.amplify_revolutions, true);
-        break;
-      }
+    wall0_ = t0;
+    for (double h : spec_.extra_output_hours)
+      if (h > 0) extra_.push_back(h * 3600.0);
+    std::sort(extra_.begin(), extra_.end());
+    next_regular_ = spec_.output_interval_h * 3600.0;
+    next_explicit_out_ = next_regular_;
+    double wall_before = 0;
+    if (hooks_.resume) {
+      restore(*hooks_.resume);
+      wall_before = res_.stats.wall_s;
+    } else {
+      drive(spec_.revolutions_per_drive);
+      record(0.0);
     }
-    res_.stats.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    try {
+      switch (spec_.method) {
+        case ForecastMethod::Ode: run_ode(); break;
+        case ForecastMethod::Euler: run_explicit(spec_.euler_step_h * 3600.0, spec_.revolutions_per_drive, false); break;
+        case ForecastMethod::Amplify: {
+          const double period_s = 60.0 / in_.speed_rpm;
+          run_explicit(spec_.amplify_revolutions * period_s * spec_.amplification, spec_.amplify_revolutions, true);
+          break;
+        }
+      }
+    } catch (const SimulationError&) {
+      if (hooks_.partial) {
+        res_.stats.wall_s = wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        res_.operating_hours = t_ / 3600.0;
+        res_.criterion = "failed";
+        res_.final_surface = cell_.displaced(y_.data());
+        *hooks_.partial = res_;
+      }
+      throw;
+    }
+    res_.stats.wall_s = wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     res_.calendar_days = spec_.calendar.calendar_days_for(res_.operating_hours);
     res_.relining_date = spec_.calendar.date_after(res_.operating_hours);
     res_.tonnes = res_.operating_hours * spec_.throughput_t_per_h;
@@ -391,13 +414,90 @@ class Life {
     record(t_s);
   }
 
+  // --- output times: every output_interval_h, and exactly at the extra times ---
+  double next_output() const {
+    return next_extra_ < extra_.size() ? std::min(next_regular_, extra_[next_extra_]) : next_regular_;
+  }
+  void advance_output() {  // past every output time already reached
+    while (next_extra_ < extra_.size() && extra_[next_extra_] <= t_ * (1 + 1e-12)) ++next_extra_;
+    while (next_regular_ <= t_ * (1 + 1e-12)) next_regular_ += spec_.output_interval_h * 3600.0;
+  }
+
+  // --- checkpoints: right after a drive or remesh, where the integrator restarts ---
+  void maybe_checkpoint() {
+    if (!hooks_.checkpoint) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - last_checkpoint_).count() < hooks_.checkpoint_interval_s) return;
+    last_checkpoint_ = now;
+    ForecastCheckpoint c;
+    c.method = method_name(spec_.method);
+    c.t_s = t_;
+    c.y = y_;
+    c.y_drive = y_drive_;
+    c.y_prev = y_prev_;
+    c.r_now = r_now_;
+    c.r_prev = r_prev_;
+    c.have_prev = have_prev_;
+    c.next_regular_s = next_regular_;
+    c.next_extra = static_cast<long long>(next_extra_);
+    c.next_explicit_out_s = next_explicit_out_;
+    c.base = cell_.base();
+    c.has_indicators = last_.has_indicators;
+    c.net_power_kw = last_.indicators.net_power_kw;
+    c.toe_deg = last_.indicators.toe_deg;
+    c.shoulder_deg = last_.indicators.shoulder_deg;
+    c.direct_impact_fraction = last_.indicators.direct_impact_fraction;
+    c.impact_fraction = last_.impact_fraction;
+    c.provider_drives = rates_.drive_count();
+    c.history = res_.history;
+    c.profiles = res_.profiles;
+    c.stats = res_.stats;
+    c.stats.wall_s += std::chrono::duration<double>(now - wall0_).count();
+    hooks_.checkpoint(c);
+  }
+
+  void restore(const ForecastCheckpoint& c) {
+    if (c.method != method_name(spec_.method))
+      throw InputError("--resume", fmt::format("the checkpoint is of a {} forecast, this run asks for {}", c.method,
+                                               method_name(spec_.method)));
+    cell_ = Cell(c.base, cell_.period());
+    if (static_cast<int>(c.y.size()) != cell_.size())
+      throw InputError("--resume", "the checkpoint's state does not match its liner (a damaged checkpoint?)");
+    t_ = c.t_s;
+    y_ = c.y;
+    y_drive_ = c.y_drive;
+    y_prev_ = c.y_prev;
+    r_now_ = c.r_now;
+    r_prev_ = c.r_prev;
+    have_prev_ = c.have_prev;
+    next_regular_ = c.next_regular_s;
+    next_extra_ = static_cast<size_t>(c.next_extra);
+    next_explicit_out_ = c.next_explicit_out_s;
+    last_ = RateSample{};
+    last_.has_indicators = c.has_indicators;
+    last_.indicators.net_power_kw = c.net_power_kw;
+    last_.indicators.toe_deg = c.toe_deg;
+    last_.indicators.shoulder_deg = c.shoulder_deg;
+    last_.indicators.direct_impact_fraction = c.direct_impact_fraction;
+    last_.impact_fraction = c.impact_fraction;
+    rates_.set_drive_count(c.provider_drives);
+    res_.history = c.history;
+    res_.profiles = c.profiles;
+    res_.stats = c.stats;
+  }
+
   void run_ode();
   void run_explicit(double dt_s, double revolutions, bool remesh_every_step);
 
   const ForecastInput& in_;
   RateProvider& rates_;
   const ForecastSpec& spec_;
+  const ForecastHooks& hooks_;
   ProgressFn progress_;
+  std::vector<double> extra_;  // [s] extra output times, sorted
+  size_t next_extra_ = 0;
+  double next_regular_ = 0, next_explicit_out_ = 0;
+  std::chrono::steady_clock::time_point wall0_, last_checkpoint_{};
   Cell cell_;
   Criteria crit_;
   RemeshOptions opt_;
@@ -504,19 +604,19 @@ int root_callback(realtype, N_Vector y, realtype* g, void* user) {
 void Life::run_ode() {
   Sundials s;
   const double horizon = spec_.max_operating_hours * 3600.0;
-  const double dt_out = spec_.output_interval_h * 3600.0;
-  long long steps = 0, rhs_evals = 0, etf = 0, ncf = 0;
+  ForecastStats& st = res_.stats;
+  // CVODE's counters restart at every CVodeInit and CVodeReInit: add them up first
   auto collect = [&] {
     if (!s.mem) return;
     long int v = 0;
     check(CVodeGetNumSteps(s.mem, &v), "CVodeGetNumSteps", t_);
-    steps += v;
+    st.cvode_steps += v;
     check(CVodeGetNumRhsEvals(s.mem, &v), "CVodeGetNumRhsEvals", t_);
-    rhs_evals += v;
+    st.rhs_evals += v;
     check(CVodeGetNumErrTestFails(s.mem, &v), "CVodeGetNumErrTestFails", t_);
-    etf += v;
+    st.error_test_failures += v;
     check(CVodeGetNumNonlinSolvConvFails(s.mem, &v), "CVodeGetNumNonlinSolvConvFails", t_);
-    ncf += v;
+    st.nonlinear_failures += v;
   };
   // (Re)creates the integrator for the current state size: after a remesh the
   // node count changes, so a CVodeReInit is not enough.
@@ -546,31 +646,24 @@ void Life::run_ode() {
     check(CVodeSetRootDirection(s.mem, dir), "CVodeSetRootDirection", t_);
   };
   auto reinit = [&] {
+    collect();
     std::copy(y_.begin(), y_.end(), N_VGetArrayPointer(s.y));
     check(CVodeReInit(s.mem, t_, s.y), "CVodeReInit", t_);
   };
+  auto stop = [&](double t_end, const std::string& criterion, bool reached) {
+    collect();
+    s.release();
+    finish(t_end, criterion, reached);
+  };
 
   start();
-  // output times: every dt_out, and exactly at the extra times asked for
-  std::vector<double> extra;
-  for (double h : spec_.extra_output_hours)
-    if (h > 0) extra.push_back(h * 3600.0);
-  std::sort(extra.begin(), extra.end());
-  size_t next_extra = 0;
-  double next_regular = dt_out;
-  auto next_output = [&] { return next_extra < extra.size() ? std::min(next_regular, extra[next_extra]) : next_regular; };
-  auto advance_output = [&] {  // past every output time already reached
-    while (next_extra < extra.size() && extra[next_extra] <= t_ * (1 + 1e-12)) ++next_extra;
-    while (next_regular <= t_ * (1 + 1e-12)) next_regular += dt_out;
-  };
-  double next_out = next_output();
   while (true) {
+    const double next_out = next_output();
     // an event can land on an output time: record it before asking CVODE for
     // an interval it would call too short
     if (t_ >= next_out * (1 - 1e-12) && next_out < horizon) {
       record(t_);
       advance_output();
-      next_out = next_output();
       continue;
     }
     const double tout = std::min(next_out, horizon);
@@ -583,13 +676,13 @@ void Life::run_ode() {
     if (flag == CV_ROOT_RETURN) {
       int found[kRoots] = {0};
       check(CVodeGetRootInfo(s.mem, found), "CVodeGetRootInfo", t_);
-      for (int i = 0; i < 4; ++i)
-        if (found[i]) {
-          collect();
-          s.release();
-          finish(t_, Criteria::name(i), true);
-          goto done;
-        }
+      int criterion = -1;
+      for (int i = 0; i < 4 && criterion < 0; ++i)
+        if (found[i]) criterion = i;
+      if (criterion >= 0) {
+        stop(t_, Criteria::name(criterion), true);
+        return;
+      }
       // A remesh and a refresh can fall on the same step, and after a restart
       // a refresh condition sitting exactly at zero is not seen as a crossing:
       // decide the refresh from the state, not from the root flag alone.
@@ -601,24 +694,17 @@ void Life::run_ode() {
         start();
       else
         reinit();
+      maybe_checkpoint();
       continue;
     }
     // an output time or the horizon
     if (t_ >= horizon * (1 - 1e-12)) {
-      collect();
-      s.release();
-      finish(horizon, "horizon", false);
-      break;
+      stop(horizon, "horizon", false);
+      return;
     }
     record(t_);
     advance_output();
-    next_out = next_output();
   }
-done:
-  res_.stats.cvode_steps = steps;
-  res_.stats.rhs_evals = rhs_evals;
-  res_.stats.error_test_failures = etf;
-  res_.stats.nonlinear_failures = ncf;
 }
 
 // ---------------------------------------------------------------------------
@@ -626,8 +712,7 @@ done:
 
 void Life::run_explicit(double dt_s, double revolutions, bool remesh_every_step) {
   const double horizon = spec_.max_operating_hours * 3600.0;
-  double next_out = spec_.output_interval_h * 3600.0;
-  if (spec_.method == ForecastMethod::Amplify) {
+  if (spec_.method == ForecastMethod::Amplify && !hooks_.resume) {
     // the first drive already happened with revolutions_per_drive; the thesis
     // method drives over its own short window
     drive(revolutions);
@@ -663,11 +748,12 @@ void Life::run_explicit(double dt_s, double revolutions, bool remesh_every_step)
     double ymax = 0;
     for (double v : y_) ymax = std::max(ymax, v);
     if (remesh_every_step || ymax > remesh_depth_) do_remesh();
-    while (t_ >= next_out) {
+    while (t_ >= next_explicit_out_) {
       record(t_);
-      next_out += spec_.output_interval_h * 3600.0;
+      next_explicit_out_ += spec_.output_interval_h * 3600.0;
     }
     drive(revolutions);
+    maybe_checkpoint();
   }
   finish(horizon, "horizon", false);
 }
@@ -675,10 +761,17 @@ void Life::run_explicit(double dt_s, double revolutions, bool remesh_every_step)
 }  // namespace
 
 ForecastResult run_forecast(const ForecastInput& in, RateProvider& rates, const ForecastSpec& spec,
-                            const ProgressFn& progress) {
+                            const ForecastHooks& hooks) {
   if (!in.initial) throw std::invalid_argument("run_forecast: no initial surface");
-  Life life(in, rates, spec, progress);
+  Life life(in, rates, spec, hooks);
   return life.run();
+}
+
+ForecastResult run_forecast(const ForecastInput& in, RateProvider& rates, const ForecastSpec& spec,
+                            const ProgressFn& progress) {
+  ForecastHooks hooks;
+  hooks.progress = progress;
+  return run_forecast(in, rates, spec, hooks);
 }
 
 }  // namespace linerlife

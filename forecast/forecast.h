@@ -77,11 +77,47 @@ struct ForecastResult {
 /// progress(hours, fraction of the horizon or of the life so far)
 using ProgressFn = std::function<void(double hours, double fraction)>;
 
+/// Everything a forecast needs to continue exactly as it would have: taken
+/// right after a charge drive or a remesh, where the integrator restarts from
+/// (t, y) anyway, so a run resumed from it repeats the uninterrupted one.
+struct ForecastCheckpoint {
+  std::string method;                  // method_name() of the run
+  double t_s = 0;                      // [s] operating time
+  std::vector<double> y, y_drive, y_prev, r_now, r_prev;  // cell-node depths [m] and rates [m/s]
+  bool have_prev = false;
+  double next_regular_s = 0;           // [s] next regular output time
+  long long next_extra = 0;            // index of the next extra output time
+  double next_explicit_out_s = 0;      // [s] explicit methods' next output time
+  LinerSurface base;                   // the ring at the last remesh
+  // what the records need from the last drive
+  bool has_indicators = false;
+  double net_power_kw = 0, toe_deg = 0, shoulder_deg = 0, direct_impact_fraction = 0, impact_fraction = 0;
+  long long provider_drives = 0;       // the provider's drive counter (seeds)
+  std::vector<LifeRecord> history;
+  std::vector<ProfileRecord> profiles;
+  ForecastStats stats;
+};
+
+struct ForecastHooks {
+  ProgressFn progress;
+  /// Called with a checkpoint at most every checkpoint_interval_s of wall time
+  /// (0: at every drive); the caller stores it atomically.
+  std::function<void(const ForecastCheckpoint&)> checkpoint;
+  double checkpoint_interval_s = 60;
+  /// Continue from this checkpoint instead of the initial liner.
+  const ForecastCheckpoint* resume = nullptr;
+  /// When the run fails, the results so far (history, profiles, stats) go
+  /// here before the SimulationError is rethrown, to be written marked partial.
+  ForecastResult* partial = nullptr;
+};
+
 /// Runs the forecast with spec.method. Throws InputError when a criterion is
 /// already met at the start, SimulationError when the integration fails (with
 /// what failed, when, and what to change).
 ForecastResult run_forecast(const ForecastInput& in, RateProvider& rates, const ForecastSpec& spec,
                             const ProgressFn& progress = {});
+ForecastResult run_forecast(const ForecastInput& in, RateProvider& rates, const ForecastSpec& spec,
+                            const ForecastHooks& hooks);
 
 /// The number of consecutive segments that repeat round the ring (1 for a
 /// uniform liner, 2 for hi-lo).

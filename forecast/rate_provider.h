@@ -26,6 +26,10 @@ class RateProvider {
   /// Recession rates on surface `s`, averaged over `revolutions` mill
   /// revolutions. Throws SimulationError when the charge model fails.
   virtual RateSample sample(const LinerSurface& s, double revolutions) = 0;
+  /// Drives so far, for providers whose drives depend on it (random seeds);
+  /// saved in checkpoints and restored on resume.
+  virtual long long drive_count() const { return 0; }
+  virtual void set_drive_count(long long) {}
 };
 
 }  // namespace linerlife

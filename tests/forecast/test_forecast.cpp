@@ -257,3 +257,60 @@ TEST_CASE("rate smoothing keeps the wear, keeps uniform fields and adds no extre
   }
   CHECK(after == Approx(before).epsilon(1e-12));
 }
+
+TEST_CASE("a forecast resumed from any checkpoint ends exactly as the uninterrupted run", "[forecast][resume]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  // a feedback field on the lifter: deeper on the leading side and at the top
+  auto rate = [](const LinerSurface& x, int i) {
+    const V& c = x.midpoint[i];
+    const double t = thickness(x, i);
+    const double lead = x.normal[i].dot(V(-c.y(), c.x()).normalized());
+    return 2e-9 * (1 + 2 * std::max(0.0, lead)) * (0.5 + std::max(0.0, t - 0.075) / 0.25);
+  };
+  ForecastSpec sp = base_spec();
+  ForecastInput in;
+  in.initial = &s;
+  for (ForecastMethod m : {ForecastMethod::Ode, ForecastMethod::Euler}) {
+    sp.method = m;
+    auto p = field(rate);
+    std::vector<ForecastCheckpoint> checkpoints;
+    ForecastHooks hooks;
+    hooks.checkpoint_interval_s = 0;
+    hooks.checkpoint = [&](const ForecastCheckpoint& c) { checkpoints.push_back(c); };
+    const ForecastResult whole = run_forecast(in, p, sp, hooks);
+    REQUIRE(whole.reached);
+    REQUIRE(checkpoints.size() > 5);
+    for (size_t k : {size_t(0), checkpoints.size() / 3, checkpoints.size() - 1}) {
+      auto q = field(rate);
+      ForecastHooks resume;
+      resume.resume = &checkpoints[k];
+      const ForecastResult again = run_forecast(in, q, sp, resume);
+      INFO(method_name(m) << ": resumed from checkpoint " << k << " at " << checkpoints[k].t_s / 3600 << " h");
+      CHECK(again.operating_hours == whole.operating_hours);  // bit for bit
+      CHECK(again.criterion == whole.criterion);
+      REQUIRE(again.history.size() == whole.history.size());
+      for (size_t i = 0; i < whole.history.size(); ++i) {
+        CHECK(again.history[i].hours == whole.history[i].hours);
+        CHECK(again.history[i].lifter_height_m == whole.history[i].lifter_height_m);
+      }
+      CHECK(again.stats.charge_redrives == whole.stats.charge_redrives);
+      CHECK(again.stats.cvode_steps == whole.stats.cvode_steps);
+    }
+  }
+}
+
+TEST_CASE("a failing forecast hands back its partial results", "[forecast][failure]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  int n = 0;
+  auto p = field([&n](const LinerSurface&, int i) { return (i == 0 && ++n > 20) ? std::nan("") : 1e-8; });
+  ForecastSpec sp = base_spec();
+  ForecastInput in;
+  in.initial = &s;
+  ForecastResult partial;
+  ForecastHooks hooks;
+  hooks.partial = &partial;
+  CHECK_THROWS_AS(run_forecast(in, p, sp, hooks), SimulationError);
+  CHECK(partial.criterion == "failed");
+  CHECK(partial.history.size() >= 1);
+  CHECK(partial.operating_hours > 0);
+}
