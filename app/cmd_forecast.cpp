@@ -5,11 +5,13 @@
 // (docs/models/forecast.md).
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "app/checkpoint_file.h"
 #include "app/commands.h"
 #include "app/forecast_setup.h"
 #include "app/json.h"
@@ -26,6 +28,7 @@ struct ForecastOptions {
   std::string method;
   bool json = false;
   bool quiet = false;
+  bool resume = false;
   std::string out;
 };
 
@@ -48,12 +51,60 @@ int run_forecast_command(const ForecastOptions& o) {
     c.forecast.method = o.method == "amplify" ? ForecastMethod::Amplify
                         : o.method == "euler" ? ForecastMethod::Euler
                                               : ForecastMethod::Ode;
+  if (o.resume && o.out.empty()) throw InputError("--resume", "--resume continues the run in an --out DIR: give --out");
   if (!o.out.empty()) check_output_dir_writable(o.out);
   ForecastSetup setup = make_forecast_setup(c);
+  const std::string config_text = config_to_toml(c, false);
 
-  const ProgressFn bar = progress_bar(o.quiet);
-  const ForecastResult f = run_forecast(setup.input, *setup.provider, c.forecast, bar);
-  if (bar) std::fprintf(stderr, "\n");
+  // checkpoints go to DIR/checkpoint.h5; --resume continues from it
+  ForecastHooks hooks;
+  hooks.progress = progress_bar(o.quiet);
+  hooks.checkpoint_interval_s = c.forecast.checkpoint_interval_s;
+  ForecastCheckpoint resume_from;
+  std::unique_ptr<OutputDir> dir;
+  if (!o.out.empty()) {
+    dir = std::make_unique<OutputDir>(o.out);
+    const std::string cp = dir->path("checkpoint.h5");
+    if (o.resume) {
+      if (std::filesystem::exists(cp)) {
+        resume_from = read_checkpoint(cp, config_text);
+        hooks.resume = &resume_from;
+        if (!o.json && !o.quiet)
+          std::cerr << fmt::format("  resuming from {} at {:.0f} operating hours\n", cp, resume_from.t_s / 3600.0);
+      } else if (!o.json && !o.quiet) {
+        std::cerr << fmt::format("  no checkpoint in {}: starting from the beginning\n", o.out);
+      }
+    }
+    dir->prepare();
+    hooks.checkpoint = [&dir, &config_text](const ForecastCheckpoint& cpt) { write_checkpoint(*dir, config_text, cpt); };
+  }
+  ForecastResult partial;
+  hooks.partial = &partial;
+  ForecastResult f;
+  try {
+    f = run_forecast(setup.input, *setup.provider, c.forecast, hooks);
+  } catch (const SimulationError&) {
+    if (hooks.progress) std::fprintf(stderr, "\n");
+    // the results so far, marked partial; the checkpoint stays for a look
+    if (dir && !partial.history.empty()) {
+      const std::string tmp = dir->temp_path("forecast.h5");
+      {
+        H5Writer h5(tmp);
+        write_run_header(h5, c, "forecast");
+        h5.attr("/", "partial", 1LL);
+        write_surface(h5, "/surface", *setup.input.initial);
+        write_surface(h5, "/final_surface", partial.final_surface);
+        write_forecast(h5, "/forecast", partial, c.forecast);
+        h5.attr("/forecast", "partial", 1LL);
+        h5.close();
+      }
+      dir->commit(tmp, "forecast.h5");
+      std::cerr << fmt::format("linerlife: the results up to the failure are in {} (marked partial)\n",
+                               dir->path("forecast.h5"));
+    }
+    throw;
+  }
+  if (hooks.progress) std::fprintf(stderr, "\n");
   const LifeRecord& last = f.history.back();
 
   if (o.json) {
@@ -119,21 +170,22 @@ int run_forecast_command(const ForecastOptions& o) {
                              f.stats.charge_redrives, f.stats.remeshes, f.stats.cvode_steps, f.stats.wall_s);
   }
 
-  if (!o.out.empty()) {
-    OutputDir dir(o.out);
-    dir.prepare();
-    const std::string tmp = dir.temp_path("forecast.h5");
+  if (dir) {
+    const std::string tmp = dir->temp_path("forecast.h5");
     {
       H5Writer h5(tmp);
       write_run_header(h5, c, "forecast");
+      h5.attr("/", "partial", 0LL);
       write_surface(h5, "/surface", *setup.input.initial);
       write_surface(h5, "/final_surface", f.final_surface);
       write_forecast(h5, "/forecast", f, c.forecast);
+      h5.attr("/forecast", "partial", 0LL);
       h5.close();
     }
-    dir.commit(tmp, "forecast.h5");
-    draw_charts("forecast", dir.path("forecast.h5"), dir.dir());
-    if (!o.json) std::cout << fmt::format("Wrote {} and charts in {}\n", dir.path("forecast.h5"), dir.dir());
+    dir->commit(tmp, "forecast.h5");
+    std::filesystem::remove(dir->path("checkpoint.h5"));  // the run is complete
+    draw_charts("forecast", dir->path("forecast.h5"), dir->dir());
+    if (!o.json) std::cout << fmt::format("Wrote {} and charts in {}\n", dir->path("forecast.h5"), dir->dir());
   }
   return 0;
 }
@@ -148,7 +200,8 @@ void register_forecast(CLI::App& app, std::function<int()>& run) {
       ->check(CLI::IsMember({"ode", "amplify", "euler"}));
   cmd->add_flag("--json", o->json, "Print one JSON object instead of the human summary");
   cmd->add_flag("--quiet", o->quiet, "No progress bar");
-  cmd->add_option("--out", o->out, "Write forecast.h5 and charts into this folder");
+  cmd->add_option("--out", o->out, "Write forecast.h5 and charts into this folder (and checkpoints while running)");
+  cmd->add_flag("--resume", o->resume, "Continue the run in --out DIR from its last checkpoint");
   cmd->callback([&run, o] { run = [o] { return run_forecast_command(*o); }; });
 }
 

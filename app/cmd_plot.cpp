@@ -3,10 +3,10 @@
 #include <filesystem>
 #include <iostream>
 
-#include <H5Cpp.h>
 #include <fmt/format.h>
 
 #include "app/commands.h"
+#include "app/h5_reader.h"
 #include "app/output_dir.h"
 #include "app/plots.h"
 #include "geometry/errors.h"
@@ -24,19 +24,8 @@ std::string results_kind(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path, fmt::format("results file {} does not exist", path));
   if (fs::is_directory(path, ec)) throw InputError(path, fmt::format("results file {} is a directory", path));
-  try {
-    H5::Exception::dontPrint();
-    H5::H5File f(path, H5F_ACC_RDONLY);
-    H5::Group root = f.openGroup("/");
-    if (!root.attrExists("command"))
-      throw InputError(path, fmt::format("{} is an HDF5 file but not a linerlife results file (no `command`)", path));
-    H5::Attribute a = root.openAttribute("command");
-    std::string kind;
-    a.read(a.getStrType(), kind);
-    return kind;
-  } catch (const H5::Exception&) {
-    throw InputError(path, fmt::format("{} is not a readable HDF5 file", path));
-  }
+  const H5Reader h5(path);
+  return h5.attr_string("/", "command");
 }
 
 int run_plot(const PlotOptions& o) {

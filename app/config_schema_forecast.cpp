@@ -115,6 +115,10 @@ void add_forecast_keys(Schema& s) {
   K.push_back(real_key("forecast", "euler_step_h", "h", "Euler method: fixed step", 0.0, 10000.0, true, false, 100.0,
                        [](Config& c, double v) { c.forecast.euler_step_h = v; },
                        [](const Config& c) { return c.forecast.euler_step_h; }));
+  K.push_back(real_key("forecast", "checkpoint_interval_s", "s",
+                       "Wall time between checkpoints of a forecast run with --out (0: after every charge drive)", 0.0,
+                       86400.0, false, false, 60.0, [](Config& c, double v) { c.forecast.checkpoint_interval_s = v; },
+                       [](const Config& c) { return c.forecast.checkpoint_interval_s; }));
   K.push_back(real_key("forecast", "output_interval_h", "h", "History and profile snapshots at least this often", 0.0,
                        1e5, true, false, 100.0, [](Config& c, double v) { c.forecast.output_interval_h = v; },
                        [](const Config& c) { return c.forecast.output_interval_h; }));

@@ -38,6 +38,7 @@ struct ForecastSpec {
   double amplify_revolutions = 1.5;  // [rev] amplify: revolutions simulated per step (Qiu 2001: about 1.5)
   double euler_step_h = 100;         // [h] euler: fixed step
   double output_interval_h = 100;    // [h] history and profile snapshots at least this often
+  double checkpoint_interval_s = 60;  // [s] wall time between checkpoints of a run with --out (0: every drive)
   std::vector<double> extra_output_hours;  // [h] snapshots also exactly at these times (calibration; ode method)
 };
 
