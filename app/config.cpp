@@ -13,6 +13,7 @@
 #include "geometry/errors.h"
 #include "geometry/measured_profile.h"
 #include "geometry/metrics.h"
+#include "forecast/calendar.h"
 
 namespace linerlife {
 
@@ -30,6 +31,14 @@ std::string format_value(const ConfigValue& v) {
   switch (v.kind) {
     case ConfigValue::Kind::Real: return format_number(v.real);
     case ConfigValue::Kind::Int: return fmt::format("{}", v.integer);
+    case ConfigValue::Kind::Date: return v.text;
+    case ConfigValue::Kind::Shutdowns: {
+      std::string out = "[";
+      for (size_t i = 0; i < v.shutdowns.size(); ++i)
+        out += fmt::format("{}{{ start = {}, days = {} }}", i ? ", " : "", iso_date(v.shutdowns[i].start),
+                           format_number(v.shutdowns[i].days));
+      return out + "]";
+    }
     case ConfigValue::Kind::String: {
       std::string out = "\"";
       for (char c : v.text) {
@@ -47,6 +56,8 @@ const char* kind_name(ConfigValue::Kind k) {
     case ConfigValue::Kind::Real: return "a number";
     case ConfigValue::Kind::Int: return "an integer";
     case ConfigValue::Kind::String: return "a string";
+    case ConfigValue::Kind::Date: return "a date (YYYY-MM-DD, unquoted)";
+    case ConfigValue::Kind::Shutdowns: return "a list of shutdowns [{ start = YYYY-MM-DD, days = N }, ...]";
   }
   return "";
 }
@@ -75,6 +86,9 @@ bool in_range(const KeySpec& k, double v) {
 }  // namespace
 
 std::string KeySpec::allowed() const {
+  if (kind == ConfigValue::Kind::Date) return "a date YYYY-MM-DD (unquoted TOML date)";
+  if (kind == ConfigValue::Kind::Shutdowns)
+    return "a list [{ start = YYYY-MM-DD, days = N }, ...] with days > 0 (may be empty)";
   if (kind == ConfigValue::Kind::String) {
     if (choices.empty()) return "a string";
     std::string s = "one of ";
@@ -103,6 +117,8 @@ const Schema& config_schema() {
     add_charge_keys(s);
     add_liner_keys(s);
     add_model_keys(s);
+    add_wear_keys(s);
+    add_forecast_keys(s);
     return s;
   }();
   return schema;
@@ -227,6 +243,12 @@ void check_and_resolve(Config& c) {
                           "for {} rows): the media cannot sit between the lifters",
                           c.charge.ball_diameter_m, gap, L.segments));
   }
+  // Wear: materials, laws and their parameters.
+  try {
+    resolve_wear_config(c);
+  } catch (const InputError& e) {
+    fail_at(c, e.key(), e.what());
+  }
 }
 
 }  // namespace
@@ -282,12 +304,45 @@ Config load_config_text(const std::string& text, const std::string& source, cons
         case ConfigValue::Kind::String:
           if (auto s = knode.as_string()) { v = ConfigValue::String(s->get()); ok = true; }
           break;
+        case ConfigValue::Kind::Date:
+          if (auto d = knode.as_date()) {
+            const toml::date dd = d->get();
+            v = ConfigValue::Date(iso_date({dd.year, dd.month, dd.day}));
+            ok = true;
+          }
+          break;
+        case ConfigValue::Kind::Shutdowns:
+          if (auto arr = knode.as_array()) {
+            std::vector<Shutdown> list;
+            ok = true;
+            for (auto&& item : *arr) {
+              const toml::table* tbl = item.as_table();
+              const toml::node* st = tbl ? tbl->get("start") : nullptr;
+              const toml::node* dy = tbl ? tbl->get("days") : nullptr;
+              if (!tbl || !st || !dy || !st->as_date() || !(dy->as_floating_point() || dy->as_integer()) ||
+                  tbl->size() != 2) {
+                ok = false;
+                break;
+              }
+              const toml::date dd = st->as_date()->get();
+              const double days = dy->as_floating_point() ? dy->as_floating_point()->get()
+                                                          : static_cast<double>(dy->as_integer()->get());
+              if (!(days > 0) || days > 3650)
+                throw InputError(sname + "." + kname,
+                                 fmt::format("{}:{}: [{}] {}: a shutdown of {} days; allowed 0 < days <= 3650", source,
+                                             line, sname, kname, days));
+              list.push_back({{dd.year, dd.month, dd.day}, days});
+            }
+            if (ok) v = ConfigValue::List(std::move(list));
+          }
+          break;
       }
       if (!ok)
         throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: expected {} ({})", source, line, sname, kname,
                                            node_text(knode), kind_name(spec->kind), spec->allowed()));
+      const bool numeric = spec->kind == ConfigValue::Kind::Real || spec->kind == ConfigValue::Kind::Int;
       const double num = spec->kind == ConfigValue::Kind::Int ? static_cast<double>(v.integer) : v.real;
-      if (spec->kind != ConfigValue::Kind::String && !in_range(*spec, num))
+      if (numeric && !in_range(*spec, num))
         throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: out of range; allowed {}", source, line, sname, kname,
                                            node_text(knode), spec->allowed()));
       if (spec->kind == ConfigValue::Kind::String && !spec->choices.empty()) {

@@ -117,3 +117,68 @@ TEST_CASE("the out folder gets the results file and the charts, atomically", "[a
   CHECK(std::string(buf, n) == "ok\n");
   fs::remove_all(dir);
 }
+
+namespace {
+
+/// The bundled default with the line starting `key = ` replaced by `line`
+/// (or `line` added after the section header `[section]` when absent).
+std::string variant(const std::string& section, const std::string& key, const std::string& line) {
+  RunResult d = run_linerlife("defaults");
+  std::string t = d.out;
+  const auto sec = t.find("\n[" + section + "]");  // the header at the start of a line
+  const auto pos = t.find("\n" + key + " = ", sec);
+  if (pos != std::string::npos) {
+    t.replace(pos + 1, t.find('\n', pos + 1) - pos - 1, line);
+  } else {
+    t.insert(t.find('\n', sec + 1) + 1, line + "\n");
+  }
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("every refusal exits 2 with its message and writes nothing", "[app][cli][input]") {
+  struct Bad {
+    std::string section, key, line, words;
+  };
+  const fs::path dir = temp_dir("refusals");
+  write(dir / "empty.csv", "x_m,y_m\n");
+  write(dir / "outside.csv", "0,0.075\n0.25,-0.01\n0.508618,0.075\n");
+  write(dir / "crossing.csv", "0,0.075\n0.3,0.3\n0.1,0.3\n0.2,0.01\n0.508618,0.075\n");
+  const std::vector<Bad> cases = {
+      {"mill", "diameter_m", "diametre_m = 10.0", "unknown key [mill] diametre_m"},
+      {"mill", "diameter_m", "diameter_m = \"big\"", "expected a number"},
+      {"mill", "diameter_m", "diameter_m = 40.0", "out of range"},
+      {"mill", "speed_rpm", "speed_rpm = 14.0", "centrifuges"},
+      {"mill", "rotation", "rotation = \"sideways\"", "one of \"ccw\", \"cw\""},
+      {"charge", "filling", "filling = 0.5", "0 < value < 0.5"},
+      {"charge", "filling", "filling = 0.0", "out of range"},
+      {"charge", "ball_filling", "ball_filling = 0.3", "larger than filling"},
+      {"charge", "ball_diameter_m", "ball_diameter_m = 0.3", "spacing between lifters"},
+      {"liner", "lifter_height_m", "lifter_height_m = 1.4", "quarter of the shell radius"},
+      {"liner", "lifter_top_width_m", "lifter_top_width_m = 0.6", "narrower than the segment"},
+      {"liner", "face_angle_leading_deg", "face_angle_leading_deg = 80.0", "out of range"},
+      {"liner", "face_angle_trailing_deg", "face_angle_trailing_deg = 50.0", "does not fit"},
+      {"liner", "segments", "segments = 63.0", "expected an integer"},
+      {"liner", "corner_radius_m", "corner_radius_m = 0.2", "does not fit"},
+      {"liner", "element_size_m", "element_size_m = 0.2", "too coarse"},
+      {"liner", "profile_csv", "profile_csv = \"" + (dir / "empty.csv").string() + "\"", "at least 3 points"},
+      {"liner", "profile_csv", "profile_csv = \"" + (dir / "outside.csv").string() + "\"", "inside the shell"},
+      {"liner", "profile_csv", "profile_csv = \"" + (dir / "crossing.csv").string() + "\"", "crosses itself"},
+      {"liner", "profile_csv", "profile_csv = \"nope.csv\"", "does not exist"},
+      {"model", "time_step_s", "time_step_s = -0.01", "out of range"},
+      {"model", "charge", "charge = \"fem\"", "\"empirical\", \"layer\", \"dem\""},
+  };
+  for (const Bad& b : cases) {
+    const fs::path cfg = dir / "bad.toml";
+    write(cfg, variant(b.section, b.key, b.line));
+    const fs::path out = dir / "out";
+    const RunResult r = run_linerlife("geometry " + cfg.string() + " --out " + out.string());
+    INFO(b.line << "\n" << r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains(b.words));
+    CHECK_THAT(r.err, Catch::Contains("bad.toml:"));  // the line of the key
+    CHECK_FALSE(fs::exists(out));
+  }
+  fs::remove_all(dir);
+}

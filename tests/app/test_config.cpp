@@ -1,7 +1,11 @@
 // The TOML configuration: defaults round trip and every refusal (issue 2 §2).
+#include <fstream>
+#include <sstream>
+
 #include <catch2/catch.hpp>
 
 #include "app/config.h"
+#include "forecast/calendar.h"
 #include "geometry/errors.h"
 
 using namespace linerlife;
@@ -10,7 +14,7 @@ namespace {
 
 /// `text` with `key = value` in `section` replaced (or added).
 std::string edited_text(std::string text, const std::string& section, const std::string& key, const std::string& value) {
-  const std::string header = "[" + section + "]";
+  const std::string header = "\n[" + section + "]";  // a section header at the start of a line
   const auto sec = text.find(header);
   REQUIRE(sec != std::string::npos);
   const auto pos = text.find("\n" + key + " = ", sec);
@@ -145,4 +149,38 @@ TEST_CASE("a configuration file that cannot be read is refused naming it", "[app
   CHECK_THROWS_WITH(load_config_file("/nonexistent/mill.toml"), Catch::Contains("does not exist"));
   CHECK_THROWS_WITH(load_config_file(LINERLIFE_SOURCE_DIR "/data"), Catch::Contains("is a directory"));
   CHECK_NOTHROW(load_config_file(LINERLIFE_SOURCE_DIR "/data/mills/pilot_test_16.toml"));
+}
+
+TEST_CASE("every configuration key is documented", "[app][config][docs]") {
+  std::ifstream f(LINERLIFE_SOURCE_DIR "/docs/configuration.md");
+  std::stringstream ss;
+  ss << f.rdbuf();
+  const std::string doc = ss.str();
+  for (const auto& k : config_schema().keys) {
+    INFO("[" << k.section << "] " << k.name << " is missing from docs/configuration.md");
+    CHECK(doc.find("### [" + k.section + "]") != std::string::npos);
+    CHECK(doc.find("| `" + k.name + "` |") != std::string::npos);
+  }
+}
+
+TEST_CASE("forecast dates, availability and shutdowns load and are checked", "[app][config][input]") {
+  std::string t = edited("forecast", "start_date", "2028-02-29");
+  t = edited_text(t, "forecast", "shutdowns", "[{ start = 2028-06-01, days = 7 }, { start = 2028-12-24, days = 3.5 }]");
+  const Config c = load_config_text(t, "f.toml", ".");
+  CHECK(iso_date(c.forecast.calendar.start) == "2028-02-29");
+  REQUIRE(c.forecast.calendar.shutdowns.size() == 2);
+  CHECK(c.forecast.calendar.shutdowns[1].days == 3.5);
+  // and round-trips through the printed file
+  const Config d = load_config_text(config_to_toml(c, true), "g.toml", ".");
+  CHECK(config_to_toml(d, false) == config_to_toml(c, false));
+
+  refused(edited("forecast", "start_date", "2027-02-30"), {"mill.toml:", "TOML syntax error"});
+  refused(edited("forecast", "start_date", "\"2027-01-01\""), {"start_date", "expected a date"});
+  refused(edited("forecast", "start_date", "2027-13-01"), {"TOML syntax error"});
+  refused(edited("forecast", "availability", "0.0"), {"availability = 0:", "0 < value <= 1"});
+  refused(edited("forecast", "availability", "1.2"), {"availability = 1.2", "out of range"});
+  refused(edited("forecast", "shutdowns", "[{ start = 2027-06-01 }]"), {"shutdowns", "expected a list"});
+  refused(edited("forecast", "shutdowns", "[{ start = 2027-06-01, days = -2 }]"), {"shutdowns", "0 < days"});
+  refused(edited("forecast", "method", "\"rk4\""), {"method = \"rk4\"", "\"ode\", \"amplify\", \"euler\""});
+  refused(edited("forecast", "rtol", "0.0"), {"rtol = 0:", "out of range"});
 }
