@@ -16,6 +16,12 @@ using RegisterCommand = void (*)(CLI::App& app, std::function<int()>& run);
 
 void register_defaults(CLI::App& app, std::function<int()>& run);
 void register_geometry(CLI::App& app, std::function<int()>& run);
+void register_charge(CLI::App& app, std::function<int()>& run);
+void register_wear(CLI::App& app, std::function<int()>& run);
+void register_forecast(CLI::App& app, std::function<int()>& run);
+void register_compare(CLI::App& app, std::function<int()>& run);
+void register_calibrate(CLI::App& app, std::function<int()>& run);
+void register_plot(CLI::App& app, std::function<int()>& run);
 
 /// The program version ("0.1.0 (git abc1234)").
 const char* program_version();

@@ -13,6 +13,7 @@
 #include "geometry/errors.h"
 #include "geometry/measured_profile.h"
 #include "geometry/metrics.h"
+#include "forecast/calendar.h"
 
 namespace linerlife {
 
@@ -30,6 +31,14 @@ std::string format_value(const ConfigValue& v) {
   switch (v.kind) {
     case ConfigValue::Kind::Real: return format_number(v.real);
     case ConfigValue::Kind::Int: return fmt::format("{}", v.integer);
+    case ConfigValue::Kind::Date: return v.text;
+    case ConfigValue::Kind::Shutdowns: {
+      std::string out = "[";
+      for (size_t i = 0; i < v.shutdowns.size(); ++i)
+        out += fmt::format("{}{{ start = {}, days = {} }}", i ? ", " : "", iso_date(v.shutdowns[i].start),
+                           format_number(v.shutdowns[i].days));
+      return out + "]";
+    }
     case ConfigValue::Kind::String: {
       std::string out = "\"";
       for (char c : v.text) {
@@ -47,6 +56,8 @@ const char* kind_name(ConfigValue::Kind k) {
     case ConfigValue::Kind::Real: return "a number";
     case ConfigValue::Kind::Int: return "an integer";
     case ConfigValue::Kind::String: return "a string";
+    case ConfigValue::Kind::Date: return "a date (YYYY-MM-DD, unquoted)";
+    case ConfigValue::Kind::Shutdowns: return "a list of shutdowns [{ start = YYYY-MM-DD, days = N }, ...]";
   }
   return "";
 }
@@ -75,6 +86,9 @@ bool in_range(const KeySpec& k, double v) {
 }  // namespace
 
 std::string KeySpec::allowed() const {
+  if (kind == ConfigValue::Kind::Date) return "a date YYYY-MM-DD (unquoted TOML date)";
+  if (kind == ConfigValue::Kind::Shutdowns)
+    return "a list [{ start = YYYY-MM-DD, days = N }, ...] with days > 0 (may be empty)";
   if (kind == ConfigValue::Kind::String) {
     if (choices.empty()) return "a string";
     std::string s = "one of ";
@@ -104,6 +118,8 @@ const Schema& config_schema() {
     add_liner_keys(s);
     add_model_keys(s);
     add_dem_keys(s);
+    add_wear_keys(s);
+    add_forecast_keys(s);
     return s;
   }();
   return schema;
@@ -134,6 +150,17 @@ void check_and_resolve(Config& c) {
     fail_at(c, "mill.speed_rpm",
             c.speed_rpm ? "give exactly one of [mill] speed_rpm and speed_fraction_critical, not both"
                         : "missing key [mill] speed_rpm or speed_fraction_critical (give exactly one)");
+  // charge-motion keys that depend on each other
+  if ((c.charge.discharge == Discharge::Overflow || c.charge.cone_length_m > 0) && !(c.charge.trunnion_radius_m > 0))
+    fail_at(c, c.charge.discharge == Discharge::Overflow ? "mill.discharge" : "mill.cone_length_m",
+            "missing key [mill] trunnion_diameter_m (required by discharge = \"overflow\" and by cone_length_m > 0)");
+  if (c.charge.trunnion_radius_m >= c.mill.shell_radius_m())
+    fail_at(c, "mill.trunnion_diameter_m",
+            fmt::format("trunnion_diameter_m = {} is not smaller than the mill diameter {}",
+                        2 * c.charge.trunnion_radius_m, c.mill.diameter_m));
+  if (c.model.slurry_drag && c.charge.discharge != Discharge::Overflow)
+    fail_at(c, "model.slurry_drag",
+            "slurry_drag = \"on\" needs discharge = \"overflow\": a grate mill has no slurry pool");
   if (c.charge.ball_filling > c.charge.filling)
     fail_at(c, "charge.ball_filling",
             fmt::format("ball_filling = {} is larger than filling = {}: the balls are part of the charge, so "
@@ -219,6 +246,12 @@ void check_and_resolve(Config& c) {
                           "for {} rows): the media cannot sit between the lifters",
                           c.charge.ball_diameter_m, gap, L.segments));
   }
+  // Wear: materials, laws and their parameters.
+  try {
+    resolve_wear_config(c);
+  } catch (const InputError& e) {
+    fail_at(c, e.key(), e.what());
+  }
 }
 
 }  // namespace
@@ -274,12 +307,45 @@ Config load_config_text(const std::string& text, const std::string& source, cons
         case ConfigValue::Kind::String:
           if (auto s = knode.as_string()) { v = ConfigValue::String(s->get()); ok = true; }
           break;
+        case ConfigValue::Kind::Date:
+          if (auto d = knode.as_date()) {
+            const toml::date dd = d->get();
+            v = ConfigValue::Date(iso_date({dd.year, dd.month, dd.day}));
+            ok = true;
+          }
+          break;
+        case ConfigValue::Kind::Shutdowns:
+          if (auto arr = knode.as_array()) {
+            std::vector<Shutdown> list;
+            ok = true;
+            for (auto&& item : *arr) {
+              const toml::table* tbl = item.as_table();
+              const toml::node* st = tbl ? tbl->get("start") : nullptr;
+              const toml::node* dy = tbl ? tbl->get("days") : nullptr;
+              if (!tbl || !st || !dy || !st->as_date() || !(dy->as_floating_point() || dy->as_integer()) ||
+                  tbl->size() != 2) {
+                ok = false;
+                break;
+              }
+              const toml::date dd = st->as_date()->get();
+              const double days = dy->as_floating_point() ? dy->as_floating_point()->get()
+                                                          : static_cast<double>(dy->as_integer()->get());
+              if (!(days > 0) || days > 3650)
+                throw InputError(sname + "." + kname,
+                                 fmt::format("{}:{}: [{}] {}: a shutdown of {} days; allowed 0 < days <= 3650", source,
+                                             line, sname, kname, days));
+              list.push_back({{dd.year, dd.month, dd.day}, days});
+            }
+            if (ok) v = ConfigValue::List(std::move(list));
+          }
+          break;
       }
       if (!ok)
         throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: expected {} ({})", source, line, sname, kname,
                                            node_text(knode), kind_name(spec->kind), spec->allowed()));
+      const bool numeric = spec->kind == ConfigValue::Kind::Real || spec->kind == ConfigValue::Kind::Int;
       const double num = spec->kind == ConfigValue::Kind::Int ? static_cast<double>(v.integer) : v.real;
-      if (spec->kind != ConfigValue::Kind::String && !in_range(*spec, num))
+      if (numeric && !in_range(*spec, num))
         throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: out of range; allowed {}", source, line, sname, kname,
                                            node_text(knode), spec->allowed()));
       if (spec->kind == ConfigValue::Kind::String && !spec->choices.empty()) {

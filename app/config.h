@@ -11,8 +11,11 @@
 #include <vector>
 
 #include "charge/charge_spec.h"
+#include "forecast/forecast_spec.h"
 #include "geometry/lifter_design.h"
 #include "geometry/mill.h"
+#include "wear/liner_material.h"
+#include "wear/wear_spec.h"
 
 namespace linerlife {
 
@@ -30,6 +33,10 @@ struct Config {
   std::string pattern = "uniform";
   std::optional<double> low_lifter_height_m, low_lifter_top_width_m;
   ModelSpec model;
+  WearSpec wear;               // laws resolved from wear_laws_text by resolve_wear_config()
+  std::string wear_laws_text = "abrasion/radziszewski, impact/sheldon_kanhere";  // [wear] laws as given
+  LinerMaterial material;      // density and hardness from [liner], ball density from [charge], the rest from [wear]
+  ForecastSpec forecast;
 
   std::map<std::string, int> key_lines;  // "section.key" -> line in the source (1-based)
   std::map<std::string, int> section_lines;
@@ -37,13 +44,16 @@ struct Config {
 
 /// A configuration value as TOML holds it.
 struct ConfigValue {
-  enum class Kind { Real, Int, String } kind = Kind::Real;
+  enum class Kind { Real, Int, String, Date, Shutdowns } kind = Kind::Real;
   double real = 0;
   long long integer = 0;
-  std::string text;
+  std::string text;                 // String; Date as "YYYY-MM-DD"
+  std::vector<Shutdown> shutdowns;  // Shutdowns: [{start = YYYY-MM-DD, days = N}, ...]
   static ConfigValue Real(double v) { ConfigValue c; c.kind = Kind::Real; c.real = v; return c; }
   static ConfigValue Int(long long v) { ConfigValue c; c.kind = Kind::Int; c.integer = v; return c; }
   static ConfigValue String(std::string v) { ConfigValue c; c.kind = Kind::String; c.text = std::move(v); return c; }
+  static ConfigValue Date(std::string v) { ConfigValue c; c.kind = Kind::Date; c.text = std::move(v); return c; }
+  static ConfigValue List(std::vector<Shutdown> v) { ConfigValue c; c.kind = Kind::Shutdowns; c.shutdowns = std::move(v); return c; }
 };
 
 /// One key of the schema.
@@ -85,6 +95,13 @@ void add_dem_keys(Schema& s);
 
 /// The cross-key rules of [dem] (config_schema_dem.cpp); throws InputError.
 void check_dem_keys(const Config& c);
+void add_wear_keys(Schema& s);
+
+/// Fills Config::material from [liner], [charge] and [wear], parses the laws
+/// and checks the wear specification (config_schema_wear.cpp). Throws
+/// InputError naming the key.
+void resolve_wear_config(Config& c);
+void add_forecast_keys(Schema& s);
 
 /// Parses and checks a configuration: TOML syntax, unknown sections and keys,
 /// types, ranges, missing required keys and the cross-key rules. Throws

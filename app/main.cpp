@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   // The subcommands, in the order `--help` lists them.
-  const RegisterCommand commands[] = {register_defaults, register_geometry};
+  const RegisterCommand commands[] = {register_defaults, register_geometry, register_charge, register_wear,
+                                      register_forecast, register_compare, register_calibrate, register_plot};
   std::function<int()> run;
   for (RegisterCommand reg : commands) reg(app, run);
 

@@ -80,4 +80,65 @@ void write_lifter_grid(H5Writer& h5, const std::string& g, const LifterGrid& gri
   h5.dataset(g + "/fraction", grid.fraction, {static_cast<size_t>(s.ny), static_cast<size_t>(s.nx)}, "-");
 }
 
+void write_forecast(H5Writer& h5, const std::string& g, const ForecastResult& f, const ForecastSpec& spec) {
+  h5.group(g);
+  h5.attr(g, "method", std::string(method_name(spec.method)));
+  h5.attr(g, "reached", static_cast<long long>(f.reached));
+  h5.attr(g, "criterion", f.criterion);
+  h5.attr(g, "operating_hours", f.operating_hours);
+  h5.attr(g, "calendar_days", f.calendar_days);
+  h5.attr(g, "relining_date", iso_date(f.relining_date));
+  h5.attr(g, "start_date", iso_date(spec.calendar.start));
+  h5.attr(g, "tonnes", f.tonnes);
+  const auto& st = f.stats;
+  h5.attr(g, "charge_redrives", static_cast<long long>(st.charge_redrives));
+  h5.attr(g, "remeshes", static_cast<long long>(st.remeshes));
+  h5.attr(g, "cvode_steps", st.cvode_steps);
+  h5.attr(g, "rhs_evals", st.rhs_evals);
+  h5.attr(g, "error_test_failures", st.error_test_failures);
+  h5.attr(g, "nonlinear_failures", st.nonlinear_failures);
+  h5.attr(g, "explicit_steps", static_cast<long long>(st.explicit_steps));
+  h5.attr(g, "wall_s", st.wall_s);
+  h5.attr(g, "charge_wall_s", st.charge_wall_s);
+  h5.attr(g, "charge_simulated_s", st.charge_simulated_s);
+
+  const std::string hg = g + "/history";
+  h5.group(hg);
+  const size_t n = f.history.size();
+  auto col = [&](const char* name, const char* units, auto field) {
+    std::vector<double> v(n);
+    for (size_t i = 0; i < n; ++i) v[i] = field(f.history[i]);
+    h5.dataset(hg + "/" + name, v, {n}, units);
+  };
+  col("hours", "h", [](const LifeRecord& r) { return r.hours; });
+  col("calendar_days", "d", [&](const LifeRecord& r) { return spec.calendar.calendar_days_for(r.hours); });
+  col("lifter_height_m", "m", [](const LifeRecord& r) { return r.lifter_height_m; });
+  col("face_angle_leading_deg", "deg", [](const LifeRecord& r) { return r.face_angle_leading_deg; });
+  col("face_angle_trailing_deg", "deg", [](const LifeRecord& r) { return r.face_angle_trailing_deg; });
+  col("top_width_m", "m", [](const LifeRecord& r) { return r.top_width_m; });
+  col("min_thickness_m", "m", [](const LifeRecord& r) { return r.min_thickness_m; });
+  col("liner_mass_kg_per_m", "kg/m", [](const LifeRecord& r) { return r.liner_mass_kg_per_m; });
+  col("net_power_kw", "kW", [](const LifeRecord& r) { return r.net_power_kw; });
+  col("toe_deg", "deg", [](const LifeRecord& r) { return r.toe_deg; });
+  col("shoulder_deg", "deg", [](const LifeRecord& r) { return r.shoulder_deg; });
+  col("direct_impact_fraction", "-", [](const LifeRecord& r) { return r.direct_impact_fraction; });
+  col("impact_fraction", "-", [](const LifeRecord& r) { return r.impact_fraction; });
+
+  const std::string pg = g + "/profiles";
+  h5.group(pg);
+  std::vector<double> xy, hours;
+  std::vector<long long> offset{0};
+  for (const ProfileRecord& p : f.profiles) {
+    for (const auto& q : p.nodes) {
+      xy.push_back(q.x());
+      xy.push_back(q.y());
+    }
+    offset.push_back(offset.back() + static_cast<long long>(p.nodes.size()));
+    hours.push_back(p.hours);
+  }
+  h5.dataset(pg + "/nodes", xy, {xy.size() / 2, 2}, "m");
+  h5.dataset(pg + "/offset", offset, {offset.size()});
+  h5.dataset(pg + "/hours", hours, {hours.size()}, "h");
+}
+
 }  // namespace linerlife

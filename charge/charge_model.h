@@ -36,6 +36,8 @@ struct ChargeSnapshot {
   std::vector<Eigen::Vector2d> position;  // [m] mill frame
   std::vector<double> radius_m;           // [m] drawn size of each element
   std::vector<int> state;                 // model-specific: 0 en masse, 1 in flight, ...
+  double liner_angle_rad = 0;             // [rad] how far the liner has turned since t = 0, physical frame
+                                          //       (anticlockwise positive; negative for a clockwise mill)
 };
 
 struct ChargeResult {
@@ -44,6 +46,7 @@ struct ChargeResult {
   LinerLoads loads;
   RunStats stats;
   std::vector<ChargeSnapshot> snapshots;  // when record_snapshot
+  std::vector<std::string> notes;         // things the user should know (sub-stepping, centrifuging...)
 };
 
 class ChargeModel {

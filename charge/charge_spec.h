@@ -7,6 +7,10 @@
 
 namespace linerlife {
 
+/// How the mill discharges (Morrell 1996): a grate keeps the slurry level at
+/// the toe; an overflow mill holds a slurry pool up to the trunnion.
+enum class Discharge { Grate, Overflow };
+
 /// The mill charge (reference/charge-models.md §1 symbols in brackets).
 struct ChargeSpec {
   double filling = 0;               // [-] J, total charge as a fraction of the volume inside the liners
@@ -15,13 +19,30 @@ struct ChargeSpec {
   double ball_density_kg_m3 = 0;    // [kg/m3] rho_b
   double ore_density_kg_m3 = 0;     // [kg/m3] rho_o
   double porosity = 0.4;            // [-] E, voids in the charge bed (Morrell 1996)
+  // Added by the charge-motion issue (Morrell's C-model needs them):
+  double slurry_void_fill = 0;      // [-] U, fraction of the bed voids filled with slurry (0: dry charge)
+  double slurry_solids_mass_fraction = 0.7;  // [-] mass fraction of solids in the slurry
+  Discharge discharge = Discharge::Grate;
+  double trunnion_radius_m = 0;     // [m] r_t; sets the slurry pool of an overflow mill and the cone power
+  double cone_length_m = 0;         // [m] L_d, length of one cone end (0: flat ends)
 };
 
 /// The charge model chosen by name (DESIGN.md §2).
 struct ModelSpec {
   std::string charge = "layer";   // "empirical" | "layer" | "dem"
   std::string variant = "1.2";    // layer model version of thesis §4.6: "1.0" | "1.1" | "1.2"
-  double time_step_s = 0.01;      // [s] time step of the layer model
+  double time_step_s = 0.005;     // [s] time step of the layer model (default from the study in docs/models/layer.md)
+  // Added by the charge-motion issue (layer model, docs/models/layer.md):
+  std::string slip_model = "morrell";   // layer speeds: "morrell" (thesis eq. 4.16) | "radziszewski" (eqs. 5.5-5.7)
+  double slip_parameter = 0.005;        // [-] delta of the Radziszewski slip law (eq. 5.7)
+  double friction_coefficient = 0.5;    // [-] mu of McIvor's flight angle (thesis eq. 4.5), ball on lifter face
+  double repose_angle_deg = 35.0;       // [deg] dynamic angle of repose: foot stability and V-1.1 clipping
+  bool slurry_drag = false;             // drag of the slurry pool on flights (overflow mills only)
+  bool lifter_slide = false;            // balls slide out along the lifter face before flying (Powell 1991)
+  double settle_revolutions = 3.0;      // [-] revolutions run before averaging starts
+  double hf_lift_angle_deg = 45.0;      // [deg] lift angle alpha of the Hogg-Fuerstenau power figure
+  double max_courant = 0;               // [-] studies only: shell travel per step / media diameter allowed
+                                        //     before sub-stepping (0: the model's own limit)
   DemSpec dem;                    // the [dem] section: parameters of the DEM model
 };
 

@@ -39,6 +39,9 @@ struct Indicators {
   double diameter_eff_m = 0;      // [m] diameter inside the (possibly worn) liners
   double fraction_critical = 0;   // [-] speed / critical speed for diameter_eff_m
   double direct_impact_fraction = 0;  // [-] share of impacting mass thrown straight onto the liner
+  // Added by the charge-motion issue:
+  double slurry_pool_power_kw = 0;    // [kW] part of net_power_kw due to the slurry pool of an overflow mill
+  double inner_radius_m = 0;          // [m] inner surface radius r_i of the circulating charge (Morrell eq. 4.14)
 };
 
 /// Statistics every run reports.
@@ -47,10 +50,14 @@ struct RunStats {
   double wall_s = 0;        // [s] wall-clock time of the run
   double realtime_ratio = 0;  // simulated_s / wall_s
   long long steps = 0;      // time steps taken
+  // Added by the charge-motion issue:
+  double time_step_s = 0;   // [s] time step actually used (after sub-stepping)
+  int substeps = 1;         // sub-steps per requested step (1: the requested step was stable)
+  long long elements = 0;   // discrete elements / particles simulated
+  long long flights = 0;    // flights launched during the run
+  double charge_mass_kg_per_m = 0;  // [kg/m] mass of all elements (conserved), per metre of length
   // Particle models (dem) only; 0 otherwise. For `linerlife charge --json`.
-  long long particles = 0;          // discs simulated
   double particle_steps_per_s = 0;  // [1/s] particles x steps per second of wall time while stepping
-  double time_step_s = 0;           // [s] DEM time step
   double contacts_per_s = 0;        // [1/s] contact evaluations per second of wall time while stepping
 };
 

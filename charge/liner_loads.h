@@ -7,6 +7,7 @@
 // the surface the run was made on.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 namespace linerlife {

@@ -200,18 +200,33 @@ LinerSurface build_liner_surface(const Mill& mill, const LinerDesign& design) {
   std::vector<std::vector<V>> profiles;
   for (int k = 0; k < n_designs; ++k) profiles.push_back(segment_profile(mill, design, k));
 
+  std::vector<int> design_of(static_cast<size_t>(design.segments), 0);
+  if (design.hi_lo)
+    for (int k = 0; k < design.segments; ++k) design_of[static_cast<size_t>(k)] = k % 2;
+  return assemble_ring(mill.shell_radius_m(), design.segments, profiles, design_of);
+}
+
+std::vector<Eigen::Vector2d> rotate_points(const std::vector<Eigen::Vector2d>& p, double angle) {
+  const double c = std::cos(angle), sn = std::sin(angle);
+  std::vector<Eigen::Vector2d> out;
+  out.reserve(p.size());
+  for (const auto& q : p) out.emplace_back(c * q.x() - sn * q.y(), sn * q.x() + c * q.y());
+  return out;
+}
+
+LinerSurface assemble_ring(double R, int segments, const std::vector<std::vector<Eigen::Vector2d>>& profiles,
+                           const std::vector<int>& segment_design) {
   LinerSurface s;
-  s.shell_radius_m = mill.shell_radius_m();
-  s.segments = design.segments;
-  const double seg = s.segment_angle_rad();
-  for (int k = 0; k < s.segments; ++k) {
-    const int which = design.hi_lo ? k % 2 : 0;
+  s.shell_radius_m = R;
+  s.segments = segments;
+  const double seg = 2 * kPi / segments;
+  for (int k = 0; k < segments; ++k) {
+    const int which = segment_design[static_cast<size_t>(k)];
     s.segment_begin.push_back(s.n_nodes());
     s.segment_design.push_back(which);
-    const auto& p = profiles[which];
-    const double c = std::cos(k * seg), sn = std::sin(k * seg);
+    const auto p = rotate_points(profiles[static_cast<size_t>(which)], k * seg);
     // the last node of a segment profile is the first of the next one
-    for (size_t i = 0; i + 1 < p.size(); ++i) s.nodes.emplace_back(c * p[i].x() - sn * p[i].y(), sn * p[i].x() + c * p[i].y());
+    for (size_t i = 0; i + 1 < p.size(); ++i) s.nodes.push_back(p[i]);
   }
   s.segment_begin.push_back(s.n_nodes());
   s.finalize();

@@ -24,6 +24,15 @@ LinerSurface build_liner_surface(const Mill& mill, const LinerDesign& design);
 /// +pi/segments, both ends included. Used by build_liner_surface.
 std::vector<Eigen::Vector2d> segment_profile(const Mill& mill, const LinerDesign& design, int which_design);
 
+/// A ring of `segments` rows from segment profiles centred on angle 0 (both
+/// edge nodes included, as segment_profile gives them): segment k uses
+/// profiles[segment_design[k]] rotated by k * 2 pi / segments.
+LinerSurface assemble_ring(double shell_radius_m, int segments, const std::vector<std::vector<Eigen::Vector2d>>& profiles,
+                           const std::vector<int>& segment_design);
+
+/// Rotates points about the mill axis by `angle_rad` (anticlockwise).
+std::vector<Eigen::Vector2d> rotate_points(const std::vector<Eigen::Vector2d>& p, double angle_rad);
+
 /// Checks a parametric design against the shell and the segment (the checks
 /// listed for build_liner_surface). `prefix` names the keys ("liner." or
 /// "liner.low_").

@@ -44,6 +44,21 @@ struct RemeshResult {
 /// negative or non-finite depths (a programming error of the caller).
 RemeshResult remesh(const LinerSurface& s, const std::vector<double>& node_depth_m, const RemeshOptions& opt);
 
+/// The new profile of segment k alone, both edge nodes included, in the mill
+/// frame. For callers that rebuild the ring from representative segments
+/// (assemble_ring): it costs one segment's Boolean operations, not the ring's.
+struct SegmentRemesh {
+  std::vector<Eigen::Vector2d> nodes;
+  RemeshStatus status = RemeshStatus::Ok;  // WornThrough if any node of the ring reached the shell
+  int worn_through_segment = -1;
+  double worn_through_angle_rad = 0;
+  double removed_area_m2 = 0;   // [m2] old - new area of segment k
+  double detached_area_m2 = 0;  // [m2]
+  std::string message;
+};
+SegmentRemesh remesh_segment(const LinerSurface& s, const std::vector<double>& node_depth_m, int k,
+                             const RemeshOptions& opt);
+
 /// Element depths -> node depths: each node takes the length-weighted mean of
 /// its two elements.
 std::vector<double> element_to_node_depth(const LinerSurface& s, const std::vector<double>& element_depth_m);

@@ -327,7 +327,7 @@ ChargeResult run_dem(const ChargeInput& in, DemSetup setup, DemRunInfo* info_out
   st.wall_s = wall;
   st.realtime_ratio = st.simulated_s / wall;
   st.steps = sys.step_count();
-  st.particles = n;
+  st.elements = n;
   st.time_step_s = dt;
   st.particle_steps_per_s = static_cast<double>(n) * st.steps / t_int;
   st.contacts_per_s = static_cast<double>(sys.pair_contact_steps() + sys.wall_contact_steps()) / t_int;

@@ -125,12 +125,12 @@ namespace {
 std::string variant(const std::string& section, const std::string& key, const std::string& line) {
   RunResult d = run_linerlife("defaults");
   std::string t = d.out;
-  const auto pos = t.find("\n" + key + " = ", t.find("[" + section + "]"));
+  const auto sec = t.find("\n[" + section + "]");  // the header at the start of a line
+  const auto pos = t.find("\n" + key + " = ", sec);
   if (pos != std::string::npos) {
     t.replace(pos + 1, t.find('\n', pos + 1) - pos - 1, line);
   } else {
-    const auto sec = t.find("[" + section + "]");
-    t.insert(t.find('\n', sec) + 1, line + "\n");
+    t.insert(t.find('\n', sec + 1) + 1, line + "\n");
   }
   return t;
 }

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "app/config.h"
+#include "forecast/calendar.h"
 #include "geometry/errors.h"
 
 using namespace linerlife;
@@ -13,7 +14,7 @@ namespace {
 
 /// `text` with `key = value` in `section` replaced (or added).
 std::string edited_text(std::string text, const std::string& section, const std::string& key, const std::string& value) {
-  const std::string header = "[" + section + "]";
+  const std::string header = "\n[" + section + "]";  // a section header at the start of a line
   const auto sec = text.find(header);
   REQUIRE(sec != std::string::npos);
   const auto pos = text.find("\n" + key + " = ", sec);
@@ -160,4 +161,26 @@ TEST_CASE("every configuration key is documented", "[app][config][docs]") {
     CHECK(doc.find("### [" + k.section + "]") != std::string::npos);
     CHECK(doc.find("| `" + k.name + "` |") != std::string::npos);
   }
+}
+
+TEST_CASE("forecast dates, availability and shutdowns load and are checked", "[app][config][input]") {
+  std::string t = edited("forecast", "start_date", "2028-02-29");
+  t = edited_text(t, "forecast", "shutdowns", "[{ start = 2028-06-01, days = 7 }, { start = 2028-12-24, days = 3.5 }]");
+  const Config c = load_config_text(t, "f.toml", ".");
+  CHECK(iso_date(c.forecast.calendar.start) == "2028-02-29");
+  REQUIRE(c.forecast.calendar.shutdowns.size() == 2);
+  CHECK(c.forecast.calendar.shutdowns[1].days == 3.5);
+  // and round-trips through the printed file
+  const Config d = load_config_text(config_to_toml(c, true), "g.toml", ".");
+  CHECK(config_to_toml(d, false) == config_to_toml(c, false));
+
+  refused(edited("forecast", "start_date", "2027-02-30"), {"mill.toml:", "TOML syntax error"});
+  refused(edited("forecast", "start_date", "\"2027-01-01\""), {"start_date", "expected a date"});
+  refused(edited("forecast", "start_date", "2027-13-01"), {"TOML syntax error"});
+  refused(edited("forecast", "availability", "0.0"), {"availability = 0:", "0 < value <= 1"});
+  refused(edited("forecast", "availability", "1.2"), {"availability = 1.2", "out of range"});
+  refused(edited("forecast", "shutdowns", "[{ start = 2027-06-01 }]"), {"shutdowns", "expected a list"});
+  refused(edited("forecast", "shutdowns", "[{ start = 2027-06-01, days = -2 }]"), {"shutdowns", "0 < days"});
+  refused(edited("forecast", "method", "\"rk4\""), {"method = \"rk4\"", "\"ode\", \"amplify\", \"euler\""});
+  refused(edited("forecast", "rtol", "0.0"), {"rtol = 0:", "out of range"});
 }

@@ -214,3 +214,22 @@ TEST_CASE("displace_nodes moves every node along its recession direction", "[geo
     CHECK(shift == Approx(0.001).epsilon(1e-3));
   }
 }
+
+TEST_CASE("remeshing one segment and replicating it equals remeshing the ring", "[geometry][remesh]") {
+  const LinerSurface s = build_liner_surface(qiu_mill(), qiu_liner());
+  // the same depth pattern on every segment (a function of the local position)
+  std::vector<double> d(s.n_nodes());
+  for (int k = 0; k < s.segments; ++k)
+    for (int i = s.segment_begin[k]; i < s.segment_begin[k + 1]; ++i) {
+      const int j = i - s.segment_begin[k];
+      d[i] = 0.002 + 0.003 * std::sin(0.2 * j) * std::sin(0.2 * j);
+    }
+  const RemeshResult full = remesh(s, d, RemeshOptions{0.01});
+  const SegmentRemesh one = remesh_segment(s, d, 0, RemeshOptions{0.01});
+  const LinerSurface ring = assemble_ring(5.18, 64, {one.nodes}, std::vector<int>(64, 0));
+  REQUIRE(ring.n_nodes() == full.surface.n_nodes());
+  double worst = 0;
+  for (int i = 0; i < ring.n_nodes(); ++i) worst = std::max(worst, (ring.nodes[i] - full.surface.nodes[i]).norm());
+  CHECK(worst < 1e-9);
+  CHECK(64 * one.removed_area_m2 == Approx(full.removed_area_m2).epsilon(1e-9));
+}

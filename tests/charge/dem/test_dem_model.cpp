@@ -109,7 +109,7 @@ TEST_CASE("a pilot-mill run gives indicators and liner loads from particle data"
   CHECK(I.direct_impact_fraction >= 0);
   CHECK(I.direct_impact_fraction <= 1);
   // statistics for `linerlife charge --json`
-  CHECK(r.stats.particles == info.particles);
+  CHECK(r.stats.elements == info.particles);
   CHECK(r.stats.time_step_s == info.time_step_s);
   CHECK(r.stats.particle_steps_per_s > 0);
   CHECK(r.stats.simulated_s == Approx(3 * 60 / 29.0).epsilon(0.01));

@@ -1,0 +1,182 @@
+#include "app/checkpoint_file.h"
+
+#include <fmt/format.h>
+
+#include "app/commands.h"
+#include "app/h5_reader.h"
+#include "app/h5_writer.h"
+#include "geometry/errors.h"
+
+namespace linerlife {
+namespace {
+
+// The LifeRecord fields, in one table for writing and reading.
+struct Field {
+  const char* name;
+  double LifeRecord::*member;
+};
+constexpr Field kFields[] = {
+    {"hours", &LifeRecord::hours},
+    {"lifter_height_m", &LifeRecord::lifter_height_m},
+    {"face_angle_leading_deg", &LifeRecord::face_angle_leading_deg},
+    {"face_angle_trailing_deg", &LifeRecord::face_angle_trailing_deg},
+    {"top_width_m", &LifeRecord::top_width_m},
+    {"min_thickness_m", &LifeRecord::min_thickness_m},
+    {"liner_mass_kg_per_m", &LifeRecord::liner_mass_kg_per_m},
+    {"net_power_kw", &LifeRecord::net_power_kw},
+    {"toe_deg", &LifeRecord::toe_deg},
+    {"shoulder_deg", &LifeRecord::shoulder_deg},
+    {"direct_impact_fraction", &LifeRecord::direct_impact_fraction},
+    {"impact_fraction", &LifeRecord::impact_fraction},
+};
+
+std::vector<double> xy(const std::vector<Eigen::Vector2d>& p) {
+  std::vector<double> v;
+  for (const auto& q : p) v.push_back(q.x()), v.push_back(q.y());
+  return v;
+}
+
+std::vector<Eigen::Vector2d> points(const std::vector<double>& v) {
+  std::vector<Eigen::Vector2d> p;
+  for (size_t i = 0; i + 1 < v.size(); i += 2) p.emplace_back(v[i], v[i + 1]);
+  return p;
+}
+
+}  // namespace
+
+void write_checkpoint(const OutputDir& dir, const std::string& config_text, const ForecastCheckpoint& c) {
+  const std::string tmp = dir.temp_path("checkpoint.h5");
+  {
+    H5Writer h5(tmp);
+    h5.attr("/", "program", std::string("linerlife"));
+    h5.attr("/", "version", std::string(program_version()));
+    h5.attr("/", "command", std::string("checkpoint"));
+    h5.text("/config", config_text);
+    const std::string g = "/checkpoint";
+    h5.group(g);
+    h5.attr(g, "method", c.method);
+    h5.attr(g, "t_s", c.t_s);
+    h5.attr(g, "have_prev", static_cast<long long>(c.have_prev));
+    h5.attr(g, "next_regular_s", c.next_regular_s);
+    h5.attr(g, "next_extra", c.next_extra);
+    h5.attr(g, "next_explicit_out_s", c.next_explicit_out_s);
+    h5.attr(g, "has_indicators", static_cast<long long>(c.has_indicators));
+    h5.attr(g, "net_power_kw", c.net_power_kw);
+    h5.attr(g, "toe_deg", c.toe_deg);
+    h5.attr(g, "shoulder_deg", c.shoulder_deg);
+    h5.attr(g, "direct_impact_fraction", c.direct_impact_fraction);
+    h5.attr(g, "impact_fraction", c.impact_fraction);
+    h5.attr(g, "provider_drives", c.provider_drives);
+    for (auto [name, v] : {std::pair<const char*, const std::vector<double>*>{"y", &c.y},
+                           {"y_drive", &c.y_drive}, {"y_prev", &c.y_prev}, {"r_now", &c.r_now}, {"r_prev", &c.r_prev}})
+      h5.dataset(g + "/" + name, *v, {v->size()});
+    // the ring at the last remesh
+    h5.attr(g, "shell_radius_m", c.base.shell_radius_m);
+    h5.attr(g, "segments", static_cast<long long>(c.base.segments));
+    const auto nodes = xy(c.base.nodes);
+    h5.dataset(g + "/base_nodes", nodes, {nodes.size()});
+    std::vector<long long> sb(c.base.segment_begin.begin(), c.base.segment_begin.end());
+    std::vector<long long> sd(c.base.segment_design.begin(), c.base.segment_design.end());
+    h5.dataset(g + "/base_segment_begin", sb, {sb.size()});
+    h5.dataset(g + "/base_segment_design", sd, {sd.size()});
+    // results so far
+    for (const Field& f : kFields) {
+      std::vector<double> v;
+      for (const LifeRecord& r : c.history) v.push_back(r.*(f.member));
+      h5.dataset(g + "/history_" + f.name, v, {v.size()});
+    }
+    std::vector<double> ph, pn;
+    std::vector<long long> off{0};
+    for (const ProfileRecord& p : c.profiles) {
+      ph.push_back(p.hours);
+      const auto v = xy(p.nodes);
+      pn.insert(pn.end(), v.begin(), v.end());
+      off.push_back(static_cast<long long>(pn.size()));
+    }
+    h5.dataset(g + "/profile_hours", ph, {ph.size()});
+    h5.dataset(g + "/profile_nodes", pn, {pn.size()});
+    h5.dataset(g + "/profile_offset", off, {off.size()});
+    const ForecastStats& s = c.stats;
+    h5.dataset(g + "/stats_int",
+               std::vector<long long>{s.charge_redrives, s.remeshes, s.cvode_steps, s.rhs_evals, s.error_test_failures,
+                                      s.nonlinear_failures, s.explicit_steps},
+               {7});
+    h5.dataset(g + "/stats_double", std::vector<double>{s.wall_s, s.charge_wall_s, s.charge_simulated_s}, {3});
+    h5.close();
+  }
+  dir.commit(tmp, "checkpoint.h5");
+}
+
+ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& config_text) {
+  H5Reader h5(path);
+  if (!h5.exists("/checkpoint") || h5.attr_string("/", "command") != "checkpoint")
+    throw InputError(path, fmt::format("{} is not a linerlife forecast checkpoint", path));
+  if (h5.text("/config") != config_text)
+    throw InputError(path, fmt::format("{} was made with another configuration; resume with the same configuration, "
+                                       "or run without --resume to start afresh",
+                                       path));
+  if (h5.attr_string("/", "version") != program_version())
+    throw InputError(path, fmt::format("{} was made by linerlife {}, this is {}; run without --resume", path,
+                                       h5.attr_string("/", "version"), program_version()));
+  const std::string g = "/checkpoint";
+  ForecastCheckpoint c;
+  c.method = h5.attr_string(g, "method");
+  c.t_s = h5.attr_double(g, "t_s");
+  c.have_prev = h5.attr_int(g, "have_prev") != 0;
+  c.next_regular_s = h5.attr_double(g, "next_regular_s");
+  c.next_extra = h5.attr_int(g, "next_extra");
+  c.next_explicit_out_s = h5.attr_double(g, "next_explicit_out_s");
+  c.has_indicators = h5.attr_int(g, "has_indicators") != 0;
+  c.net_power_kw = h5.attr_double(g, "net_power_kw");
+  c.toe_deg = h5.attr_double(g, "toe_deg");
+  c.shoulder_deg = h5.attr_double(g, "shoulder_deg");
+  c.direct_impact_fraction = h5.attr_double(g, "direct_impact_fraction");
+  c.impact_fraction = h5.attr_double(g, "impact_fraction");
+  c.provider_drives = h5.attr_int(g, "provider_drives");
+  c.y = h5.doubles(g + "/y");
+  c.y_drive = h5.doubles(g + "/y_drive");
+  c.y_prev = h5.doubles(g + "/y_prev");
+  c.r_now = h5.doubles(g + "/r_now");
+  c.r_prev = h5.doubles(g + "/r_prev");
+  c.base.shell_radius_m = h5.attr_double(g, "shell_radius_m");
+  c.base.segments = static_cast<int>(h5.attr_int(g, "segments"));
+  c.base.nodes = points(h5.doubles(g + "/base_nodes"));
+  for (long long v : h5.ints(g + "/base_segment_begin")) c.base.segment_begin.push_back(static_cast<int>(v));
+  for (long long v : h5.ints(g + "/base_segment_design")) c.base.segment_design.push_back(static_cast<int>(v));
+  if (c.base.segment_begin.size() != static_cast<size_t>(c.base.segments) + 1 ||
+      c.base.segment_begin.back() != static_cast<int>(c.base.nodes.size()))
+    throw InputError(path, fmt::format("{}: the stored liner is inconsistent (a damaged checkpoint?)", path));
+  c.base.finalize();
+  const std::vector<double> hours = h5.doubles(g + "/history_hours");
+  c.history.resize(hours.size());
+  for (const Field& f : kFields) {
+    const std::vector<double> v = h5.doubles(g + "/history_" + f.name);
+    if (v.size() != hours.size()) throw InputError(path, fmt::format("{}: damaged history", path));
+    for (size_t i = 0; i < v.size(); ++i) c.history[i].*(f.member) = v[i];
+  }
+  const std::vector<double> ph = h5.doubles(g + "/profile_hours"), pn = h5.doubles(g + "/profile_nodes");
+  const std::vector<long long> off = h5.ints(g + "/profile_offset");
+  if (off.size() != ph.size() + 1) throw InputError(path, fmt::format("{}: damaged profiles", path));
+  for (size_t i = 0; i < ph.size(); ++i) {
+    ProfileRecord p;
+    p.hours = ph[i];
+    p.nodes = points(std::vector<double>(pn.begin() + off[i], pn.begin() + off[i + 1]));
+    c.profiles.push_back(std::move(p));
+  }
+  const std::vector<long long> si = h5.ints(g + "/stats_int");
+  const std::vector<double> sd = h5.doubles(g + "/stats_double");
+  if (si.size() != 7 || sd.size() != 3) throw InputError(path, fmt::format("{}: damaged statistics", path));
+  c.stats.charge_redrives = static_cast<int>(si[0]);
+  c.stats.remeshes = static_cast<int>(si[1]);
+  c.stats.cvode_steps = si[2];
+  c.stats.rhs_evals = si[3];
+  c.stats.error_test_failures = si[4];
+  c.stats.nonlinear_failures = si[5];
+  c.stats.explicit_steps = static_cast<int>(si[6]);
+  c.stats.wall_s = sd[0];
+  c.stats.charge_wall_s = sd[1];
+  c.stats.charge_simulated_s = sd[2];
+  return c;
+}
+
+}  // namespace linerlife

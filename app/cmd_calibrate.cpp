@@ -1,0 +1,204 @@
+// `linerlife calibrate [CONFIG] --measured FILE.csv [--fit abrasion,impact]
+// [--json] [--out DIR]`: fits the wear calibration factors (thesis Table B.1:
+// centrifugal, gravitational, impact) to lifter profiles measured at stated
+// operating hours, reports the misfit and the parameter uncertainty, writes
+// the calibrated configuration, and forecasts the rest of the life from the
+// last measurement with a P10/P50/P90 relining date
+// (docs/measured-profiles.md, docs/models/forecast.md).
+#include <array>
+#include <cmath>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "app/commands.h"
+#include "app/config_edit.h"
+#include "app/forecast_setup.h"
+#include "app/json.h"
+#include "app/output_dir.h"
+#include "app/plots.h"
+#include "app/results.h"
+#include "forecast/calibrate.h"
+#include "forecast/measured_history.h"
+#include "geometry/build_liner_surface.h"
+#include "geometry/errors.h"
+
+namespace linerlife {
+namespace {
+
+struct CalibrateOptions {
+  std::string config;
+  std::string measured;
+  std::string fit = "abrasion,impact";
+  bool json = false;
+  std::string out;
+};
+
+/// Which calibration factors each fitted parameter scales.
+struct Param {
+  std::string name;
+  bool centrifugal, gravitational, impact;
+};
+
+std::vector<Param> parse_fit(const std::string& fit) {
+  if (fit == "abrasion,impact" || fit == "impact,abrasion")
+    return {{"abrasion", true, true, false}, {"impact", false, false, true}};
+  if (fit == "abrasion") return {{"abrasion", true, true, false}};
+  if (fit == "impact") return {{"impact", false, false, true}};
+  if (fit == "all") return {{"all", true, true, true}};
+  if (fit == "centrifugal,gravitational,impact")
+    return {{"centrifugal", true, false, false}, {"gravitational", false, true, false}, {"impact", false, false, true}};
+  throw InputError("--fit", fmt::format("--fit {}: allowed abrasion,impact (default), abrasion, impact, all, or "
+                                        "centrifugal,gravitational,impact",
+                                        fit));
+}
+
+/// The scale of each calibration factor for a parameter vector.
+std::array<double, 3> scales(const std::vector<Param>& ps, const std::vector<double>& v) {
+  std::array<double, 3> s{1, 1, 1};
+  for (size_t i = 0; i < ps.size(); ++i) {
+    if (ps[i].centrifugal) s[0] *= v[i];
+    if (ps[i].gravitational) s[1] *= v[i];
+    if (ps[i].impact) s[2] *= v[i];
+  }
+  return s;
+}
+
+int run_calibrate(const CalibrateOptions& o) {
+  const Config c = load_config_or_default(o.config);
+  if (o.measured.empty()) throw InputError("--measured", "calibrate needs --measured FILE.csv (docs/measured-profiles.md)");
+  const MeasuredHistory h = load_measured_history(o.measured);
+  validate_measured_history(h, c.mill.shell_radius_m(), c.liner.segments);
+  const std::vector<Param> ps = parse_fit(o.fit);
+  if (!o.out.empty()) check_output_dir_writable(o.out);
+
+  ForecastSetup setup = make_forecast_setup(c);  // checks the models at setup
+  CalibrationProblem p;
+  for (const Param& q : ps) p.names.push_back(q.name);
+  p.initial.assign(ps.size(), 1.0);
+  p.make_provider = [&c, &ps](const std::vector<double>& v) {
+    const auto s = scales(ps, v);
+    return make_scaled_provider(c, s[0], s[1], s[2]);
+  };
+  p.input = setup.input;
+  p.spec = c.forecast;
+  p.measured = h;
+  p.segments = c.liner.segments;
+  if (!o.json) std::cerr << fmt::format("  fitting {} parameter(s) to {} profiles...\n", ps.size(), h.snapshots.size());
+  const CalibrationResult r = calibrate(p);
+
+  // the calibrated configuration
+  Config cal = c;
+  const auto s = scales(ps, r.params);
+  cal = config_with(cal, "wear.calibration_centrifugal", fmt::format("{}", c.wear.calibration_centrifugal * s[0]), "calibrate");
+  cal = config_with(cal, "wear.calibration_gravitational", fmt::format("{}", c.wear.calibration_gravitational * s[1]), "calibrate");
+  cal = config_with(cal, "wear.calibration_impact", fmt::format("{}", c.wear.calibration_impact * s[2]), "calibrate");
+
+  // the rest of the life from the last measured profile
+  const MeasuredSnapshot& last = h.snapshots.back();
+  LinerDesign worn = c.liner;
+  worn.measured = true;
+  worn.hi_lo = false;
+  worn.profile.source = fmt::format("{} at {} h", o.measured, last.hours);
+  worn.profile.points = last.points;
+  auto worn_ring = std::make_shared<LinerSurface>(build_liner_surface(c.mill, worn));
+  ForecastInput rest = setup.input;
+  rest.initial = worn_ring.get();
+  const LifeQuantiles q = life_quantiles(r.params, r.covariance_log, p.make_provider, rest, c.forecast);
+  const Calendar& cal_days = c.forecast.calendar;
+  auto date = [&](double remaining_h) { return iso_date(cal_days.date_after(last.hours + remaining_h)); };
+
+  if (o.json) {
+    Json params = Json::array();
+    for (size_t i = 0; i < ps.size(); ++i)
+      params.push(Json::object().set("name", ps[i].name).set("factor", r.params[i]).set("sigma_ln", r.sigma_log[i]));
+    Json j = Json::object();
+    j.set("config", c.source)
+        .set("measured", o.measured)
+        .set("profiles", static_cast<int>(h.snapshots.size()))
+        .set("parameters", params)
+        .set("calibration_centrifugal", cal.wear.calibration_centrifugal)
+        .set("calibration_gravitational", cal.wear.calibration_gravitational)
+        .set("calibration_impact", cal.wear.calibration_impact)
+        .set("rms_initial_m", r.rms_initial_m)
+        .set("rms_m", r.rms_m)
+        .set("rms_per_profile_m", r.rms_per_snapshot_m)
+        .set("converged", r.converged)
+        .set("forecasts", r.forecasts + q.forecasts)
+        .set("last_measured_hours", last.hours)
+        .set("remaining_hours_p10", q.p10_h)
+        .set("remaining_hours_p50", q.p50_h)
+        .set("remaining_hours_p90", q.p90_h)
+        .set("relining_date_p10", date(q.p10_h))
+        .set("relining_date_p50", date(q.p50_h))
+        .set("relining_date_p90", date(q.p90_h))
+        .set("criterion", q.criterion);
+    std::cout << j.dump() << "\n";
+  } else {
+    std::cout << fmt::format("Calibration of {} against {} ({} profiles, {} to {} h)\n", c.source, o.measured,
+                             h.snapshots.size(), h.snapshots.front().hours, last.hours);
+    for (size_t i = 0; i < ps.size(); ++i)
+      std::cout << fmt::format("  {:<14} factor {:.4g}  (1-sigma x/ {:.3f})\n", ps[i].name, r.params[i],
+                               std::exp(r.sigma_log[i]));
+    std::cout << fmt::format("  calibration_centrifugal = {:.6g}, calibration_gravitational = {:.6g}, "
+                             "calibration_impact = {:.6g}\n",
+                             cal.wear.calibration_centrifugal, cal.wear.calibration_gravitational,
+                             cal.wear.calibration_impact);
+    std::cout << fmt::format("  RMS misfit {:.2f} mm (was {:.2f} mm with the given factors); {} forecasts\n",
+                             1000 * r.rms_m, 1000 * r.rms_initial_m, r.forecasts);
+    std::cout << fmt::format("  remaining life from {} h: P10 {:.0f} h ({}), P50 {:.0f} h ({}), P90 {:.0f} h ({}); {}\n",
+                             last.hours, q.p10_h, date(q.p10_h), q.p50_h, date(q.p50_h), q.p90_h, date(q.p90_h),
+                             q.criterion);
+  }
+
+  if (!o.out.empty()) {
+    OutputDir dir(o.out);
+    dir.prepare();
+    dir.write_text("calibrated.toml", "# Calibrated by `linerlife calibrate` against " + o.measured + "\n" +
+                                          config_to_toml(cal, true));
+    const std::vector<ProfileRecord> fitted = fitted_profiles(p, r.params);
+    const std::string tmp = dir.temp_path("calibrate.h5");
+    {
+      H5Writer h5(tmp);
+      write_run_header(h5, cal, "calibrate");
+      write_surface(h5, "/surface", *setup.surface);
+      h5.group("/calibrate");
+      h5.attr("/calibrate", "rms_m", r.rms_m);
+      h5.attr("/calibrate", "rms_initial_m", r.rms_initial_m);
+      h5.attr("/calibrate", "remaining_hours_p10", q.p10_h);
+      h5.attr("/calibrate", "remaining_hours_p50", q.p50_h);
+      h5.attr("/calibrate", "remaining_hours_p90", q.p90_h);
+      for (size_t i = 0; i < h.snapshots.size(); ++i) {
+        const std::string g = fmt::format("/calibrate/profile_{}", i);
+        h5.group(g);
+        h5.attr(g, "hours", h.snapshots[i].hours);
+        std::vector<double> m, f;
+        for (const auto& pt : unrolled_to_mill(h.snapshots[i].points, c.mill.shell_radius_m(), c.liner.segments))
+          m.push_back(pt.x()), m.push_back(pt.y());
+        for (const auto& pt : fitted[i].nodes) f.push_back(pt.x()), f.push_back(pt.y());
+        h5.dataset(g + "/measured", m, {m.size() / 2, 2}, "m");
+        h5.dataset(g + "/fitted", f, {f.size() / 2, 2}, "m");
+      }
+      h5.close();
+    }
+    dir.commit(tmp, "calibrate.h5");
+    draw_charts("calibrate", dir.path("calibrate.h5"), dir.dir());
+    if (!o.json) std::cout << fmt::format("Wrote {}, {} and charts\n", dir.path("calibrated.toml"), dir.path("calibrate.h5"));
+  }
+  return 0;
+}
+
+}  // namespace
+
+void register_calibrate(CLI::App& app, std::function<int()>& run) {
+  auto o = std::make_shared<CalibrateOptions>();
+  auto* cmd = app.add_subcommand("calibrate", "Fit the wear calibration factors to measured profiles and forecast the rest of the life");
+  cmd->add_option("CONFIG", o->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill");
+  cmd->add_option("--measured", o->measured, "Measured profiles: CSV hours,x_m,y_m (docs/measured-profiles.md)");
+  cmd->add_option("--fit", o->fit, "Factors to fit: abrasion,impact (default), abrasion, impact, all");
+  cmd->add_flag("--json", o->json, "Print one JSON object");
+  cmd->add_option("--out", o->out, "Write calibrated.toml, calibrate.h5 and charts into this folder");
+  cmd->callback([&run, o] { run = [o] { return run_calibrate(*o); }; });
+}
+
+}  // namespace linerlife

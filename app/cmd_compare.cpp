@@ -1,0 +1,176 @@
+// `linerlife compare CONFIG... | CONFIG --vary KEY=v1,v2,...`: forecasts for
+// several lifter designs or operating choices side by side (face angle,
+// height, rows, hi-lo, speed...): liner life, mean and end-of-life power,
+// direct liner impacts.
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "app/commands.h"
+#include "app/config_edit.h"
+#include "app/forecast_setup.h"
+#include "app/json.h"
+#include "app/output_dir.h"
+#include "app/plots.h"
+#include "app/results.h"
+#include "geometry/errors.h"
+
+namespace linerlife {
+namespace {
+
+struct CompareOptions {
+  std::vector<std::string> configs;
+  std::string vary;
+  std::string method;
+  bool json = false;
+  std::string out;
+};
+
+struct Case {
+  std::string label;
+  Config config;
+  ForecastResult result;
+  double mean_power_kw = 0, final_power_kw = 0, mean_direct_impacts = 0;
+};
+
+/// Time average of a history column over the life (trapezoids).
+double time_mean(const std::vector<LifeRecord>& h, double LifeRecord::*field) {
+  double area = 0, span = 0;
+  for (size_t i = 1; i < h.size(); ++i) {
+    const double dt = h[i].hours - h[i - 1].hours;
+    const double a = h[i - 1].*field, b = h[i].*field;
+    if (!std::isfinite(a) || !std::isfinite(b) || dt <= 0) continue;
+    area += 0.5 * (a + b) * dt;
+    span += dt;
+  }
+  return span > 0 ? area / span : (h.empty() ? NAN : h.front().*field);
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, sep)) out.push_back(item);
+  return out;
+}
+
+int run_compare(const CompareOptions& o) {
+  std::vector<Case> cases;
+  if (!o.vary.empty()) {
+    if (o.configs.size() > 1)
+      throw InputError("--vary", "--vary takes one configuration (or none: the bundled mill); got " +
+                                     std::to_string(o.configs.size()));
+    const Config base = load_config_or_default(o.configs.empty() ? "" : o.configs.front());
+    const auto eq = o.vary.find('=');
+    if (eq == std::string::npos || eq + 1 >= o.vary.size())
+      throw InputError("--vary", fmt::format("--vary {}: write KEY=v1,v2,... (e.g. liner.face_angle_leading_deg=15,25)",
+                                             o.vary));
+    const std::string key = o.vary.substr(0, eq);
+    const std::vector<std::string> values = split(o.vary.substr(eq + 1), ',');
+    if (values.size() < 2) throw InputError("--vary", fmt::format("--vary {}: give at least two values", o.vary));
+    for (const auto& v : values) cases.push_back({key + "=" + v, config_with(base, key, v, "--vary"), {}});
+  } else {
+    if (o.configs.size() < 2)
+      throw InputError("compare", "compare needs two or more configurations, or one with --vary KEY=v1,v2,...");
+    for (const auto& p : o.configs) cases.push_back({p, load_config_file(p), {}});
+  }
+  if (!o.out.empty()) check_output_dir_writable(o.out);
+  // set every case up before running any, so a bad one is refused at once
+  std::vector<ForecastSetup> setups;
+  for (Case& k : cases) {
+    if (!o.method.empty())
+      k.config.forecast.method = o.method == "amplify" ? ForecastMethod::Amplify
+                                 : o.method == "euler" ? ForecastMethod::Euler
+                                                       : ForecastMethod::Ode;
+    setups.push_back(make_forecast_setup(k.config));
+  }
+  for (size_t i = 0; i < cases.size(); ++i) {
+    Case& k = cases[i];
+    if (!o.json) std::cerr << fmt::format("  forecast {}/{}: {}\n", i + 1, cases.size(), k.label);
+    k.result = run_forecast(setups[i].input, *setups[i].provider, k.config.forecast);
+    k.mean_power_kw = time_mean(k.result.history, &LifeRecord::net_power_kw);
+    k.final_power_kw = k.result.history.back().net_power_kw;
+    k.mean_direct_impacts = time_mean(k.result.history, &LifeRecord::direct_impact_fraction);
+  }
+
+  if (o.json) {
+    Json arr = Json::array();
+    for (const Case& k : cases) {
+      const LifeRecord& last = k.result.history.back();
+      Json j = Json::object();
+      j.set("case", k.label)
+          .set("reached", k.result.reached)
+          .set("criterion", k.result.criterion)
+          .set("relining_date", iso_date(k.result.relining_date))
+          .set("operating_hours", k.result.operating_hours)
+          .set("tonnes", k.result.tonnes)
+          .set("mean_net_power_kw", k.mean_power_kw)
+          .set("final_net_power_kw", k.final_power_kw)
+          .set("mean_direct_impact_fraction", k.mean_direct_impacts)
+          .set("lifter_height_m_final", last.lifter_height_m)
+          .set("face_angle_leading_deg_final", last.face_angle_leading_deg);
+      arr.push(j);
+    }
+    std::cout << Json::object().set("cases", arr).dump() << "\n";
+  } else {
+    std::cout << fmt::format("{:<36} {:>11} {:>9} {:>22} {:>10} {:>10} {:>8}\n", "case", "relining", "hours",
+                             "criterion", "power kW", "end kW", "direct");
+    for (const Case& k : cases)
+      std::cout << fmt::format("{:<36} {:>11} {:>9.0f} {:>22} {:>10.0f} {:>10.0f} {:>8.3f}\n", k.label,
+                               iso_date(k.result.relining_date), k.result.operating_hours, k.result.criterion,
+                               k.mean_power_kw, k.final_power_kw, k.mean_direct_impacts);
+  }
+
+  if (!o.out.empty()) {
+    OutputDir dir(o.out);
+    dir.prepare();
+    const std::string tmp = dir.temp_path("compare.h5");
+    {
+      H5Writer h5(tmp);
+      write_run_header(h5, cases.front().config, "compare");
+      h5.group("/cases");
+      std::vector<double> hours, mean_p, end_p, direct;
+      std::string labels;
+      for (size_t i = 0; i < cases.size(); ++i) {
+        const Case& k = cases[i];
+        hours.push_back(k.result.operating_hours);
+        mean_p.push_back(k.mean_power_kw);
+        end_p.push_back(k.final_power_kw);
+        direct.push_back(k.mean_direct_impacts);
+        labels += (i ? "\n" : "") + k.label;
+        const std::string g = fmt::format("/cases/{}", i);
+        h5.group(g);
+        h5.attr(g, "label", k.label);
+        h5.text(g + "/config", config_to_toml(k.config, false));
+        write_forecast(h5, g + "/forecast", k.result, k.config.forecast);
+      }
+      h5.attr("/cases", "labels", labels);
+      h5.dataset("/cases/operating_hours", hours, {hours.size()}, "h");
+      h5.dataset("/cases/mean_net_power_kw", mean_p, {mean_p.size()}, "kW");
+      h5.dataset("/cases/final_net_power_kw", end_p, {end_p.size()}, "kW");
+      h5.dataset("/cases/mean_direct_impact_fraction", direct, {direct.size()}, "-");
+      h5.close();
+    }
+    dir.commit(tmp, "compare.h5");
+    draw_charts("compare", dir.path("compare.h5"), dir.dir());
+    if (!o.json) std::cout << fmt::format("Wrote {} and charts in {}\n", dir.path("compare.h5"), dir.dir());
+  }
+  return 0;
+}
+
+}  // namespace
+
+void register_compare(CLI::App& app, std::function<int()>& run) {
+  auto o = std::make_shared<CompareOptions>();
+  auto* cmd = app.add_subcommand("compare", "Forecasts for several lifter designs or operating choices side by side");
+  cmd->add_option("CONFIG", o->configs, "Two or more configurations, or one with --vary");
+  cmd->add_option("--vary", o->vary, "KEY=v1,v2,... one key (section.key) over several values");
+  cmd->add_option("--method", o->method, "ode (default), amplify or euler")->check(CLI::IsMember({"ode", "amplify", "euler"}));
+  cmd->add_flag("--json", o->json, "Print one JSON object instead of the table");
+  cmd->add_option("--out", o->out, "Write compare.h5 and charts into this folder");
+  cmd->callback([&run, o] { run = [o] { return run_compare(*o); }; });
+}
+
+}  // namespace linerlife

@@ -1,0 +1,208 @@
+// `linerlife forecast [CONFIG] [--method ode|amplify|euler] [--json] [--out DIR]`:
+// the product's main job. Integrates the wear of the liner over operating
+// time with the charge motion re-driven on the worn geometry, to the first
+// relining criterion, and turns the operating hours into a date
+// (docs/models/forecast.md).
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "app/checkpoint_file.h"
+#include "app/commands.h"
+#include "app/forecast_setup.h"
+#include "app/json.h"
+#include "app/output_dir.h"
+#include "app/plots.h"
+#include "app/results.h"
+#include "geometry/errors.h"
+
+namespace linerlife {
+namespace {
+
+struct ForecastOptions {
+  std::string config;
+  std::string method;
+  bool json = false;
+  bool quiet = false;
+  bool resume = false;
+  std::string out;
+};
+
+/// A progress bar on stderr when it is a terminal; silent otherwise.
+ProgressFn progress_bar(bool quiet) {
+  if (quiet || !isatty(STDERR_FILENO)) return {};
+  return [](double hours, double fraction) {
+    const int width = 30, filled = static_cast<int>(std::round(fraction * width));
+    std::fprintf(stderr, "\r  [%s%s] %3.0f %% of the life used, %8.0f operating hours", std::string(filled, '#').c_str(),
+                 std::string(width - filled, ' ').c_str(), 100 * fraction, hours);
+    std::fflush(stderr);
+  };
+}
+
+std::string num(double v, const char* f) { return std::isfinite(v) ? fmt::format(fmt::runtime(f), v) : "n/a"; }
+
+int run_forecast_command(const ForecastOptions& o) {
+  Config c = load_config_or_default(o.config);
+  if (!o.method.empty())
+    c.forecast.method = o.method == "amplify" ? ForecastMethod::Amplify
+                        : o.method == "euler" ? ForecastMethod::Euler
+                                              : ForecastMethod::Ode;
+  if (o.resume && o.out.empty()) throw InputError("--resume", "--resume continues the run in an --out DIR: give --out");
+  if (!o.out.empty()) check_output_dir_writable(o.out);
+  ForecastSetup setup = make_forecast_setup(c);
+  const std::string config_text = config_to_toml(c, false);
+
+  // checkpoints go to DIR/checkpoint.h5; --resume continues from it
+  ForecastHooks hooks;
+  hooks.progress = progress_bar(o.quiet);
+  hooks.checkpoint_interval_s = c.forecast.checkpoint_interval_s;
+  ForecastCheckpoint resume_from;
+  std::unique_ptr<OutputDir> dir;
+  if (!o.out.empty()) {
+    dir = std::make_unique<OutputDir>(o.out);
+    const std::string cp = dir->path("checkpoint.h5");
+    if (o.resume) {
+      if (std::filesystem::exists(cp)) {
+        resume_from = read_checkpoint(cp, config_text);
+        hooks.resume = &resume_from;
+        if (!o.json && !o.quiet)
+          std::cerr << fmt::format("  resuming from {} at {:.0f} operating hours\n", cp, resume_from.t_s / 3600.0);
+      } else if (!o.json && !o.quiet) {
+        std::cerr << fmt::format("  no checkpoint in {}: starting from the beginning\n", o.out);
+      }
+    }
+    dir->prepare();
+    hooks.checkpoint = [&dir, &config_text](const ForecastCheckpoint& cpt) { write_checkpoint(*dir, config_text, cpt); };
+  }
+  ForecastResult partial;
+  hooks.partial = &partial;
+  ForecastResult f;
+  try {
+    f = run_forecast(setup.input, *setup.provider, c.forecast, hooks);
+  } catch (const SimulationError&) {
+    if (hooks.progress) std::fprintf(stderr, "\n");
+    // the results so far, marked partial; the checkpoint stays for a look
+    if (dir && !partial.history.empty()) {
+      const std::string tmp = dir->temp_path("forecast.h5");
+      {
+        H5Writer h5(tmp);
+        write_run_header(h5, c, "forecast");
+        h5.attr("/", "partial", 1LL);
+        write_surface(h5, "/surface", *setup.input.initial);
+        write_surface(h5, "/final_surface", partial.final_surface);
+        write_forecast(h5, "/forecast", partial, c.forecast);
+        h5.attr("/forecast", "partial", 1LL);
+        h5.close();
+      }
+      dir->commit(tmp, "forecast.h5");
+      std::cerr << fmt::format("linerlife: the results up to the failure are in {} (marked partial)\n",
+                               dir->path("forecast.h5"));
+    }
+    throw;
+  }
+  if (hooks.progress) std::fprintf(stderr, "\n");
+  const LifeRecord& last = f.history.back();
+
+  if (o.json) {
+    Json hist = Json::object();
+    std::vector<double> h, lh, fa, pw;
+    for (const LifeRecord& r : f.history) {
+      h.push_back(r.hours);
+      lh.push_back(r.lifter_height_m);
+      fa.push_back(r.face_angle_leading_deg);
+      pw.push_back(r.net_power_kw);
+    }
+    hist.set("hours", h).set("lifter_height_m", lh).set("face_angle_leading_deg", fa).set("net_power_kw", pw);
+    Json j = Json::object();
+    j.set("config", c.source)
+        .set("method", method_name(c.forecast.method))
+        .set("charge_model", c.model.charge)
+        .set("reached", f.reached)
+        .set("criterion", f.criterion)
+        .set("start_date", iso_date(c.forecast.calendar.start))
+        .set("relining_date", iso_date(f.relining_date))
+        .set("operating_hours", f.operating_hours)
+        .set("calendar_days", f.calendar_days)
+        .set("tonnes", f.tonnes)
+        .set("lifter_height_m_final", last.lifter_height_m)
+        .set("face_angle_leading_deg_final", last.face_angle_leading_deg)
+        .set("face_angle_trailing_deg_final", last.face_angle_trailing_deg)
+        .set("min_thickness_m_final", last.min_thickness_m)
+        .set("liner_mass_kg_per_m_final", last.liner_mass_kg_per_m)
+        .set("charge_redrives", f.stats.charge_redrives)
+        .set("remeshes", f.stats.remeshes)
+        .set("cvode_steps", f.stats.cvode_steps)
+        .set("rhs_evals", f.stats.rhs_evals)
+        .set("error_test_failures", f.stats.error_test_failures)
+        .set("explicit_steps", f.stats.explicit_steps)
+        .set("charge_simulated_s", f.stats.charge_simulated_s)
+        .set("wall_s", f.stats.wall_s)
+        .set("history", hist);
+    std::cout << j.dump() << "\n";
+  } else {
+    const LifeRecord& first = f.history.front();
+    std::cout << fmt::format("Forecast for {} ({} method, {} charge model)\n", c.source, method_name(c.forecast.method),
+                             c.model.charge);
+    if (f.reached)
+      std::cout << fmt::format("  relining date            {}  ({} reached)\n", iso_date(f.relining_date), f.criterion);
+    else
+      std::cout << fmt::format("  no relining criterion reached within {} operating hours (until {})\n",
+                               c.forecast.max_operating_hours, iso_date(f.relining_date));
+    std::cout << fmt::format("  operating hours          {:>10.0f} h from {} ({:.0f} calendar days at {} availability)\n",
+                             f.operating_hours, iso_date(c.forecast.calendar.start), f.calendar_days,
+                             c.forecast.calendar.availability);
+    if (c.forecast.throughput_t_per_h > 0)
+      std::cout << fmt::format("  ore processed            {:>10.3f} Mt at {} t/h\n", f.tonnes / 1e6,
+                               c.forecast.throughput_t_per_h);
+    std::cout << fmt::format("  lifter height            {:>10.4f} m  -> {:.4f} m\n", first.lifter_height_m,
+                             last.lifter_height_m);
+    std::cout << fmt::format("  leading face angle       {:>10} deg -> {} deg\n", num(first.face_angle_leading_deg, "{:.1f}"),
+                             num(last.face_angle_leading_deg, "{:.1f}"));
+    std::cout << fmt::format("  thinnest point           {:>10.4f} m  -> {:.4f} m\n", first.min_thickness_m,
+                             last.min_thickness_m);
+    std::cout << fmt::format("  net power                {:>10} kW -> {} kW\n", num(first.net_power_kw, "{:.0f}"),
+                             num(last.net_power_kw, "{:.0f}"));
+    std::cout << fmt::format("  effort                   {} charge drives, {} remeshes, {} CVODE steps, {:.1f} s wall\n",
+                             f.stats.charge_redrives, f.stats.remeshes, f.stats.cvode_steps, f.stats.wall_s);
+  }
+
+  if (dir) {
+    const std::string tmp = dir->temp_path("forecast.h5");
+    {
+      H5Writer h5(tmp);
+      write_run_header(h5, c, "forecast");
+      h5.attr("/", "partial", 0LL);
+      write_surface(h5, "/surface", *setup.input.initial);
+      write_surface(h5, "/final_surface", f.final_surface);
+      write_forecast(h5, "/forecast", f, c.forecast);
+      h5.attr("/forecast", "partial", 0LL);
+      h5.close();
+    }
+    dir->commit(tmp, "forecast.h5");
+    std::filesystem::remove(dir->path("checkpoint.h5"));  // the run is complete
+    draw_charts("forecast", dir->path("forecast.h5"), dir->dir());
+    if (!o.json) std::cout << fmt::format("Wrote {} and charts in {}\n", dir->path("forecast.h5"), dir->dir());
+  }
+  return 0;
+}
+
+}  // namespace
+
+void register_forecast(CLI::App& app, std::function<int()>& run) {
+  auto o = std::make_shared<ForecastOptions>();
+  auto* cmd = app.add_subcommand("forecast", "Forecast the liner's wear life and relining date (the main job)");
+  cmd->add_option("CONFIG", o->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill");
+  cmd->add_option("--method", o->method, "ode (default), amplify (the thesis/Qiu method) or euler")
+      ->check(CLI::IsMember({"ode", "amplify", "euler"}));
+  cmd->add_flag("--json", o->json, "Print one JSON object instead of the human summary");
+  cmd->add_flag("--quiet", o->quiet, "No progress bar");
+  cmd->add_option("--out", o->out, "Write forecast.h5 and charts into this folder (and checkpoints while running)");
+  cmd->add_flag("--resume", o->resume, "Continue the run in --out DIR from its last checkpoint");
+  cmd->callback([&run, o] { run = [o] { return run_forecast_command(*o); }; });
+}
+
+}  // namespace linerlife

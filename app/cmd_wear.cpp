@@ -1,0 +1,169 @@
+// `linerlife wear [CONFIG] [--revolutions N] [--amplification A] [--feedback]
+// [--rotation ccw|cw] [--json] [--out DIR]`: the per-step coupled wear run of
+// thesis chapter 5 (wear/wear_run.h; docs/models/wear.md §6). The charge model
+// of [model] charge is driven on the liner, the amplified wear of every time
+// step is applied to the profile, the profile is remeshed, and with
+// --feedback the charge is driven again on the worn profile.
+//
+// --out writes wear.h5 (layout in docs/models/wear.md §7) and the charts of
+// thesis Figs. 5-13, 5-16, 5-17 and B-5. For Figs. 5-16 and 5-17 the run is
+// repeated with the abrasion laws only and with the impact laws only.
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+
+#include "app/commands.h"
+#include "app/json.h"
+#include "app/output_dir.h"
+#include "app/plots.h"
+#include "app/results.h"
+#include "app/wear_results.h"
+#include "geometry/build_liner_surface.h"
+#include "geometry/errors.h"
+#include "geometry/metrics.h"
+#include "wear/wear_laws.h"
+#include "wear/wear_run.h"
+
+namespace linerlife {
+namespace {
+
+struct WearOptions {
+  std::string config;
+  std::optional<double> revolutions;
+  std::optional<double> amplification;
+  bool feedback = false;
+  std::string rotation;
+  bool json = false;
+  std::string out;
+};
+
+/// The laws of `spec` of one kind only.
+WearSpec only(const WearSpec& spec, WearKind kind) {
+  WearSpec s = spec;
+  s.laws.clear();
+  for (const auto& name : spec.laws)
+    if (find_wear_law(name).kind == kind) s.laws.push_back(name);
+  return s;
+}
+
+bool has_kind(const WearSpec& spec, WearKind kind) {
+  for (const auto& name : spec.laws)
+    if (find_wear_law(name).kind == kind) return true;
+  return false;
+}
+
+int run_wear_command(const WearOptions& o) {
+  Config c = load_config_or_default(o.config);
+  if (o.amplification) {
+    const double a = *o.amplification;
+    if (!(std::isfinite(a) && a > 0 && a <= 1e9))
+      throw InputError("--amplification", fmt::format("--amplification {}: out of range; allowed 0 < value <= 1e9", a));
+    c.wear.amplification_abrasion = c.wear.amplification_impact = a;
+  }
+  if (o.revolutions) {
+    const double n = *o.revolutions;
+    if (!(std::isfinite(n) && n > 0 && n <= 1e4))
+      throw InputError("--revolutions", fmt::format("--revolutions {}: out of range; allowed 0 < value <= 1e4", n));
+    c.wear.revolutions = n;
+  }
+  if (o.feedback) c.wear.feedback = true;
+  validate_wear_spec(c.wear);
+  // The liner is built for the configured rotation (its leading face faces
+  // it); --rotation turns the mill the other way with the same liner, as the
+  // thesis' Rotation switch does (Table B.1, Fig. B-1).
+  Mill mill = c.mill;
+  if (!o.rotation.empty()) mill.rotation = o.rotation == "cw" ? Rotation::Cw : Rotation::Ccw;
+  const ChargeModelEntry& entry = find_charge_model(c.model.charge);
+  make_wear_model(c.wear, entry);  // the law-model combination, before any work
+  if (!o.out.empty()) check_output_dir_writable(o.out);
+
+  WearRunInput in;
+  in.mill = mill;
+  in.charge = c.charge;
+  in.model = c.model;
+  in.surface = build_liner_surface(c.mill, c.liner);
+  in.material = c.material;
+  in.wear = c.wear;
+  in.remesh.element_size_m = c.liner.element_size_m;
+  const bool tty = isatty(fileno(stderr)) != 0 && !o.json;
+  int last_pct = -1;
+  if (tty)
+    in.progress = [&last_pct](double f) {
+      const int pct = static_cast<int>(f * 100);
+      if (pct != last_pct) {
+        std::fprintf(stderr, "\rwear: %3d %%", pct);
+        last_pct = pct;
+      }
+    };
+  const WearRunResult r = run_wear(in, entry);
+  if (tty) std::fprintf(stderr, "\r            \r");
+
+  std::optional<WearRunResult> abrasion_only, impact_only;
+  if (!o.out.empty() && has_kind(c.wear, WearKind::Abrasion) && has_kind(c.wear, WearKind::Impact)) {
+    in.progress = nullptr;
+    in.wear = only(c.wear, WearKind::Abrasion);
+    abrasion_only = run_wear(in, entry);
+    in.wear = only(c.wear, WearKind::Impact);
+    impact_only = run_wear(in, entry);
+  }
+
+  const Json j = wear_summary(c, r, mill, entry.name);
+  if (o.json) {
+    std::cout << j.dump() << "\n";
+  } else {
+    const SegmentMetrics m0 = segment_metrics(r.initial, 0, mill.rotation, c.material.density_kg_m3);
+    const SegmentMetrics m1 = segment_metrics(r.final, 0, mill.rotation, c.material.density_kg_m3);
+    std::cout << fmt::format("Wear run of {} ({} charge model, {} revolutions, amplification {:g}/{:g}{})\n", c.source,
+                             entry.name, c.wear.revolutions, c.wear.amplification_abrasion, c.wear.amplification_impact,
+                             c.wear.feedback ? ", feedback" : "");
+    std::cout << fmt::format("  laws                        {}\n", law_list_text(c.wear.laws));
+    std::cout << fmt::format("  mass lost                   {:>10.3f} kg per m of length ({:.1f} kg for {} m)\n",
+                             r.mass_loss_kg_per_m, r.mass_loss_kg_per_m * mill.length_m, mill.length_m);
+    std::cout << fmt::format("    from impact               {:>10.1f} %\n",
+                             r.mass_loss_kg_per_m > 0 ? 100 * r.mass_loss_impact_kg_per_m / r.mass_loss_kg_per_m : 0.0);
+    std::cout << fmt::format("  liner mass after            {:>10.1f} kg per m\n", r.liner_mass_final_kg_per_m);
+    std::cout << fmt::format("  deepest recession           {:>10.4f} m\n", r.max_recession_m);
+    std::cout << fmt::format("  lifter height               {:>10.4f} m (was {:.4f})\n", m1.lifter_height_m,
+                             m0.lifter_height_m);
+    std::cout << fmt::format("  leading face angle          {:>10.2f} deg (was {:.2f})\n", m1.face_angle_leading_deg,
+                             m0.face_angle_leading_deg);
+    std::cout << fmt::format("  simulated / wall time       {:>10.2f} s / {:.3f} s ({:.0f} x real time)\n",
+                             r.simulated_s, r.wall_s, r.realtime_ratio);
+    if (r.worn_through) std::cout << "  stopped: " << r.message << "\n";
+  }
+
+  if (!o.out.empty()) {
+    OutputDir dir(o.out);
+    dir.prepare();
+    const std::string tmp = dir.temp_path("wear.h5");
+    write_wear_h5(tmp, c, j, r, abrasion_only ? &*abrasion_only : nullptr, impact_only ? &*impact_only : nullptr);
+    dir.commit(tmp, "wear.h5");
+    draw_charts("wear", dir.path("wear.h5"), dir.dir());
+    if (!o.json) std::cout << fmt::format("Wrote {} and charts in {}\n", dir.path("wear.h5"), dir.dir());
+  }
+  return 0;
+}
+
+}  // namespace
+
+void register_wear(CLI::App& app, std::function<int()>& run) {
+  auto opts = std::make_shared<WearOptions>();
+  auto* cmd = app.add_subcommand(
+      "wear", "The per-step coupled wear run (thesis ch. 5): charge model, amplified wear, remeshing, feedback");
+  cmd->add_option("CONFIG", opts->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill");
+  cmd->add_option("--revolutions", opts->revolutions, "Mill revolutions to simulate ([wear] revolutions)");
+  cmd->add_option("--amplification", opts->amplification,
+                  "Wear amplification A for abrasion and impact ([wear] amplification_*; Qiu 2001: 1e7)");
+  cmd->add_flag("--feedback", opts->feedback, "Drive the charge on the worn profile ([wear] feedback = 1)");
+  cmd->add_option("--rotation", opts->rotation, "Turn the mill this way with the same liner ([mill] rotation)")
+      ->check(CLI::IsMember({"ccw", "cw"}));
+  cmd->add_flag("--json", opts->json, "Print one JSON object instead of the human summary");
+  cmd->add_option("--out", opts->out, "Write wear.h5 and charts into this folder");
+  cmd->callback([&run, opts] { run = [opts] { return run_wear_command(*opts); }; });
+}
+
+}  // namespace linerlife

@@ -1,0 +1,41 @@
+#include "app/config_edit.h"
+
+#include <fmt/format.h>
+
+#include "geometry/errors.h"
+
+namespace linerlife {
+
+Config config_with(const Config& c, const std::string& section_key, const std::string& value, const std::string& what) {
+  const auto dot = section_key.find('.');
+  if (dot == std::string::npos)
+    throw InputError(what, fmt::format("{}: \"{}\" is not a key; write it as section.key, e.g. "
+                                       "liner.face_angle_leading_deg",
+                                       what, section_key));
+  const std::string sec = section_key.substr(0, dot), key = section_key.substr(dot + 1);
+  if (!config_schema().find(sec, key))
+    throw InputError(what, fmt::format("{}: unknown configuration key [{}] {}", what, sec, key));
+  std::string text = config_to_toml(c, false);
+  const auto s = text.find("\n[" + sec + "]\n");
+  if (s == std::string::npos) throw std::logic_error("config_with: section missing from the printed configuration");
+  const auto next = text.find("\n[", s + 1);
+  const auto k = text.find("\n" + key + " = ", s);
+  const std::string line = key + " = " + value;
+  if (k != std::string::npos && (next == std::string::npos || k < next))
+    text.replace(k + 1, text.find('\n', k + 1) - k - 1, line);
+  else
+    text.insert(text.find('\n', s + 1) + 1, line + "\n");
+  // a key given as speed_rpm replaces a speed given as a fraction, and back
+  if (sec == "mill" && (key == "speed_rpm" || key == "speed_fraction_critical")) {
+    const std::string other = key == "speed_rpm" ? "speed_fraction_critical" : "speed_rpm";
+    const auto o = text.find("\n" + other + " = ");
+    if (o != std::string::npos) text.erase(o + 1, text.find('\n', o + 1) - o);
+  }
+  try {
+    return load_config_text(text, fmt::format("{} ({} = {})", c.source, section_key, value), c.base_dir);
+  } catch (const InputError& e) {
+    throw InputError(what, fmt::format("{} {}={}: {}", what, section_key, value, e.what()));
+  }
+}
+
+}  // namespace linerlife

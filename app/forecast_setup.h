@@ -1,0 +1,30 @@
+// forecast_setup.h - from a configuration to everything a forecast run needs:
+// the initial ring, the charge model, the wear model (checked against each
+// other at setup) and the rate provider. Shared by forecast, compare and
+// calibrate.
+#pragma once
+
+#include <memory>
+
+#include "app/config.h"
+#include "forecast/forecast.h"
+#include "geometry/liner_surface.h"
+
+namespace linerlife {
+
+struct ForecastSetup {
+  std::shared_ptr<LinerSurface> surface;    // the initial ring
+  ForecastInput input;                      // points at *surface
+  std::unique_ptr<RateProvider> provider;   // charge model + wear laws
+};
+
+/// Throws InputError for a charge model that is not available, an
+/// incompatible wear law, or a liner material out of range (naming the key).
+ForecastSetup make_forecast_setup(const Config& c);
+
+/// A provider for the configuration with its wear calibration factors scaled
+/// (centrifugal, gravitational, impact): the parameters `calibrate` fits.
+std::unique_ptr<RateProvider> make_scaled_provider(const Config& c, double k_centrifugal, double k_gravitational,
+                                                   double k_impact);
+
+}  // namespace linerlife

@@ -1,0 +1,74 @@
+"""Charts of `linerlife forecast`: the profile evolution of one lifter (like
+thesis Fig. 5-13), the lifter metrics along the life, and the charge
+indicators along the life."""
+import matplotlib.pyplot as plt
+import numpy as np
+
+from plot_common import lifter_frame, save
+
+
+def draw(h5, out):
+    f = h5["/forecast"]
+    R = float(h5["/surface"].attrs["shell_radius_m"])
+    hist = f["history"]
+    hours = np.asarray(hist["hours"])
+    date = f.attrs["relining_date"]
+    crit = f.attrs["criterion"]
+    method = f.attrs["method"]
+
+    # Profile evolution: every snapshot in the lifter's frame, coloured by time.
+    p = f["profiles"]
+    nodes, offset, ph = np.asarray(p["nodes"]), np.asarray(p["offset"]), np.asarray(p["hours"])
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    cmap = plt.cm.viridis
+    step = max(1, len(ph) // 12)
+    picks = list(range(0, len(ph), step))
+    if picks[-1] != len(ph) - 1:
+        picks.append(len(ph) - 1)
+    for i in picks:
+        x, y = lifter_frame(nodes[offset[i]:offset[i + 1]], R, 0.0)
+        ax.plot(x, y, "-", color=cmap(ph[i] / max(ph[-1], 1e-9)), lw=1.2 if i in (0, len(ph) - 1) else 0.7,
+                label=f"{ph[i]:.0f} h" if i in (picks[0], picks[len(picks) // 2], picks[-1]) else None)
+    t = np.linspace(x.min() / R, x.max() / R, 200)
+    ax.plot(R * np.sin(t), R - R * np.cos(t), "k-", lw=1)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x from the lifter centreline [m]")
+    ax.set_ylabel("height above the shell [m]")
+    ax.set_title(f"Lifter profile over the life ({method}): ends {date}, {crit}")
+    ax.legend(fontsize=8)
+    save(fig, out, "forecast_profiles.png")
+
+    # Lifter metrics against operating hours.
+    fig, axes = plt.subplots(2, 2, figsize=(9, 6), sharex=True)
+    axes[0, 0].plot(hours, 1000 * np.asarray(hist["lifter_height_m"]))
+    axes[0, 0].set_ylabel("lifter height [mm]")
+    axes[0, 1].plot(hours, hist["face_angle_leading_deg"], label="leading")
+    axes[0, 1].plot(hours, hist["face_angle_trailing_deg"], label="trailing")
+    axes[0, 1].set_ylabel("face angle from radial [deg]")
+    axes[0, 1].legend(fontsize=8)
+    axes[1, 0].plot(hours, 1000 * np.asarray(hist["min_thickness_m"]))
+    axes[1, 0].set_ylabel("thinnest point [mm]")
+    axes[1, 1].plot(hours, np.asarray(hist["liner_mass_kg_per_m"]) / 1000)
+    axes[1, 1].set_ylabel("liner mass [t per m]")
+    for a in axes[1]:
+        a.set_xlabel("operating hours")
+    fig.suptitle(f"Liner along the life: relining {date} ({crit})")
+    fig.tight_layout()
+    save(fig, out, "forecast_lifter.png")
+
+    # Charge indicators against operating hours.
+    fig, axes = plt.subplots(1, 3, figsize=(11, 3.5))
+    axes[0].plot(hours, hist["net_power_kw"])
+    axes[0].set_ylabel("net power [kW]")
+    axes[1].plot(hours, hist["toe_deg"], label="toe")
+    axes[1].plot(hours, hist["shoulder_deg"], label="shoulder")
+    axes[1].set_ylabel("angle [deg, mill frame]")
+    axes[1].legend(fontsize=8)
+    axes[2].plot(hours, hist["direct_impact_fraction"], label="direct liner impacts")
+    axes[2].plot(hours, hist["impact_fraction"], label="impact share of wear")
+    axes[2].set_ylabel("fraction")
+    axes[2].legend(fontsize=8)
+    for a in axes:
+        a.set_xlabel("operating hours")
+    fig.tight_layout()
+    save(fig, out, "forecast_charge.png")

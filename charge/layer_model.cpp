@@ -1,0 +1,1933 @@
+// The layer model (docs/models/layer.md). Everything is computed for an
+// anticlockwise mill (the canonical frame); a clockwise mill is mirrored in
+// and out (canonical_surface.h).
+#include "charge/layer_model.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "charge/canonical_surface.h"
+#include "charge/charge_occupancy.h"
+#include "charge/lifter_launch.h"
+#include "charge/liner_ride_table.h"
+#include "charge/morrell_c_model.h"
+#include "charge/slip_model.h"
+#include "charge/slot_map.h"
+#include "charge/slurry_drag.h"
+#include "geometry/errors.h"
+#include "geometry/metrics.h"
+
+namespace linerlife {
+namespace {
+
+using V = Eigen::Vector2d;
+constexpr double kTwoPi = 2.0 * kPi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+constexpr double kInvTwoPi = 1.0 / kTwoPi;
+
+/// floor for |x| < 2^62 without a libm call (truncation is one SSE2 instruction).
+inline double fast_floor(double x) {
+  const double t = static_cast<double>(static_cast<long long>(x));
+  return t > x ? t - 1.0 : t;
+}
+
+inline double wrap2pi(double a) {
+  if (a >= 0 && a < kTwoPi) return a;
+  return a - kTwoPi * fast_floor(a * kInvTwoPi);
+}
+
+/// atan2 to about 1e-5 rad (enough to find bins and slots; polynomial of
+/// Abramowitz & Stegun 4.4.49 type on [0, 1] with octant reduction).
+inline double fast_atan2(double y, double x) {
+  const double ax = std::abs(x), ay = std::abs(y);
+  const double mx = std::max(ax, ay), mn = std::min(ax, ay);
+  if (mx == 0) return 0;
+  const double a = mn / mx, s = a * a;
+  double r = ((((((-0.0040540580 * s + 0.0218612288) * s - 0.0559098861) * s + 0.0964200441) * s - 0.1390853351) * s +
+               0.1994653599) * s - 0.3332985605) * s * a + a;
+  if (ay > ax) r = 0.5 * kPi - r;
+  if (x < 0) r = kPi - r;
+  return y < 0 ? -r : r;
+}
+
+/// Pulp density [kg/m3] of a slurry with solids mass fraction w.
+double pulp_density(double w, double rho_solid, double rho_water) { return 1.0 / (w / rho_solid + (1.0 - w) / rho_water); }
+
+/// One concentric layer: a rigid ring of S slots of one media diameter.
+struct Layer {
+  double r = 0;          // [m] radius of the slot centres
+  int S = 0;             // slots
+  double delta = 0;      // [rad] slot angle 2 pi / S
+  double inv_delta = 0;  // [1/rad]
+  double omega = 0;      // [rad/s] angular speed (slip model)
+  double phase = 0;      // [rad] angle of slot 0 at the start of the current step, in [0, 2 pi)
+  int offset = 0;        // first slot in the occupancy array
+  bool held = false;     // held by the lifters of at least one segment
+  double release = kInf; // [rad] flight angle of an unheld layer (+inf: never leaves)
+  double rel_min = kInf, rel_max = -kInf;  // [rad] range of the per-segment flight angles of a held layer
+};
+
+/// How an element of a held layer leaves the lifter of one segment.
+struct HeldLaunch {
+  bool held = false;       // this layer is held by this segment's lifter
+  bool released = false;   // false: carried round
+  double release = kInf;   // [rad] polar angle where it leaves its slot
+  double slide_s = 0;      // [s] sliding time along the face
+  double dtheta = 0;       // [rad] launch angle - release angle
+  double radius = 0;       // [m] launch radius
+  double vr = 0, vt = 0;   // [m/s] launch velocity, polar components
+};
+
+struct Landing {
+  double t = 0;        // [s]
+  int flight = 0;      // index in the flight list
+  int bin = -1;        // ride-table bin of a liner impact, -1 for a landing on the charge
+  V p = V::Zero(), v = V::Zero();  // [m], [m/s] state at landing
+};
+
+/// A slot reaching its flight angle within the current step.
+struct DepartureEvent {
+  double t;  // [s]
+  int j, s;  // layer, slot
+  int seg;   // segment of the lifter holding it, -1 if unheld
+};
+
+struct Flight {
+  int id = 0, from_layer = 0;
+  double t_rel = 0;   // [s] leaves its slot (start of the slide along a lifter face)
+  double t0 = 0;      // [s] origin of the parabola (the launch)
+  V p0, v0;           // [m], [m/s] state at t0
+  V p_rel;            // [m] where it left its slot
+  double t_check = 0; // [s] path checked up to here
+  double t_next = 0;  // [s] end of the next interval to check
+  bool landed = false;  // a landing has been found, at `landing` (it happens when the steps get there)
+  Landing landing;
+  bool drag = false;  // in the slurry pool: p0, v0 are advanced numerically
+  double grace = 0;   // [s] no contact with the charge counts before this time (a relaunched element
+                      //     first clears the cell it rolled off)
+};
+
+
+
+class LayerSim {
+ public:
+  explicit LayerSim(const ChargeInput& in);
+  ChargeResult run();
+
+ private:
+  // ---- setup
+  void setup_geometry();
+  void setup_layers();
+  void setup_flight_angles();
+  void setup_initial_fill();
+  // ---- state queries
+  double slot_angle(int j, int s, double tau) const {
+    return L_[j].phase + L_[j].omega * (tau - t_step0_) + s * L_[j].delta;
+  }
+  int slot_of(int j, double theta, double tau) const {
+    const Layer& l = L_[j];
+    const double u = wrap2pi(theta - l.phase - l.omega * (tau - t_step0_) + 0.5 * l.delta);
+    int s = static_cast<int>(u * l.inv_delta);
+    return s >= l.S ? s - l.S : (s < 0 ? 0 : s);
+  }
+  /// Direction (cos, sin) of slot s of layer j at time tau, from per-layer
+  /// tables and a cached direction of the layer's phase (no trig per call).
+  void slot_dir(int j, int s, double tau, double& c, double& sn) const {
+    if (dir_tau_[j] != tau) {
+      const double ph = L_[j].phase + L_[j].omega * (tau - t_step0_);
+      dir_c_[j] = std::cos(ph);
+      dir_s_[j] = std::sin(ph);
+      dir_tau_[j] = tau;
+    }
+    const double cs = slot_cos_[L_[j].offset + s], ss = slot_sin_[L_[j].offset + s];
+    c = dir_c_[j] * cs - dir_s_[j] * ss;
+    sn = dir_s_[j] * cs + dir_c_[j] * ss;
+  }
+  int& occ(int j, int s) { return occ_[L_[j].offset + s]; }
+  int occ(int j, int s) const { return occ_[L_[j].offset + s]; }
+  /// Top of the charge column at angle theta at time tau: the layer just
+  /// above the highest element of the stack there (so a landing element sits
+  /// on top, never in a hole under other elements). Starts from the column
+  /// map and walks up or down to the current top.
+  int ncol(double theta, double tau) const {
+    const Layer& l0 = L_[0];
+    const double ph = l0.phase + l0.omega * (t_map_ - t_step0_);
+    int s0 = static_cast<int>(wrap2pi(theta - ph + 0.5 * l0.delta) * l0.inv_delta);
+    if (s0 >= l0.S) s0 -= l0.S;
+    int h = std::min(col_[s0], n_open_);
+    while (h < n_open_ && occ(h, slot_of(h, theta, tau)) >= 0) ++h;
+    while (h > 0 && occ(h - 1, slot_of(h - 1, theta, tau)) < 0) --h;
+    return h;
+  }
+  double mill_angle(double tau) const { return omega_ * tau + canon_.initial_angle_rad; }
+  /// Where an en-masse element of layer j at polar angle theta is drawn: the
+  /// outer layer rides on the liner; inner layers keep their radius unless a
+  /// lifter below pushes them in.
+  double drawn_radius(int j, double theta, double tau) const {
+    const double ride = ride_.ride(theta - mill_angle(tau));
+    return j == 0 ? ride : std::min(L_[j].r, ride - j * d_);
+  }
+  V flight_position(const Flight& f, double tau) const;
+  V flight_velocity(const Flight& f, double tau) const;
+  // ---- the step
+  void departures(double t0, double t1);
+  void launch(int j, int s, double tau, int seg, bool relaunch = false);
+  /// Polar angle beyond which layer j cannot carry an element (its flight angle).
+  double flight_angle(int j) const { return std::min(L_[j].release, L_[j].rel_min); }
+  void check_flights(double t1);
+  /// The time up to which check_flight() has nothing to do for f: it
+  /// returns false for every t1 <= wake_time(f).
+  static double wake_time(const Flight& f) {
+    if (f.landed) return std::nextafter(f.landing.t, -kInf);
+    return std::max(f.t_next, f.t0);
+  }
+  bool check_flight(Flight& f, double t1, Landing& out);
+  bool check_flight_drag(Flight& f, double t1, Landing& out);
+  /// First crossing into the liner over (tau, tb] of the path through pa with
+  /// velocity va and acceleration acc at tau.
+  bool liner_crossing(const V& pa, const V& va, const V& acc, double tau, double tb, double& t_hit, int& bin) const;
+  /// The point q (radius r, angle theta) lies in an occupied cell at time tq.
+  bool inside_charge(const V& q, double r, double theta, double tq) const;
+  void drag_advance(Flight& f, double h) const;
+  void deposit(int id, double theta, double tau, const V& v_land);
+  /// Puts element `id`, which is in no slot, at (k, s) at time tau and lets
+  /// it settle by the foot-stability rules.
+  void place(int id, int k, int s, double tau);
+  /// From theta, steps against the rotation (one outer cell at a time) to
+  /// the first column with room below n_open (and, with `holdable`, whose
+  /// top cell its layer can hold), passing over the columns the column map
+  /// shows full; theta and k_out are that column's angle and top. False if
+  /// there is none.
+  bool toe_ward_room(double& theta, double tau, bool holdable, int& k_out) const;
+  /// The slot is on the rising side beyond the flight angle of its layer.
+  bool past_flight_angle(int k, int s, double tau) const;
+  /// An element just placed in slot s of layer j at time tau: if it is past
+  /// where the layer lets go, it leaves now; if it gets there before the end
+  /// of the current step, it leaves then (departures() has already run).
+  void check_departure(int j, int s, double tau);
+  void support_sweep(double tau);
+  /// Element `id` leaves slot s of layer j at tau: the arc it swept since it
+  /// came there is added to the occupancy (exact time integration).
+  void leave_slot(int id, int j, int s, double tau);
+  /// Element `id` comes to slot s of layer j at tau.
+  void enter_slot(int id, int j, int s, double tau);
+  /// Foot stability of the whole surface: the top element of every column
+  /// rolls to a neighbouring column where the surface is steeper than the
+  /// angle of repose (or where its layer cannot hold it), a sandpile rule.
+  void relax_surface(double tau);
+  /// Whether the element at (k, s) at tau would roll, and where: the top
+  /// cell (kn, sn) of the steepest-descent neighbouring column.
+  bool roll_target(int k, int s, double tau, int& kn_out, int& sn_out);
+  /// Whether the top of the column above outer cell s may roll at tau (a
+  /// conservative filter for relax_surface(), from the column map).
+  bool relax_candidate(int s, double tau) const;
+  /// Column heights round the outer layer at tau, and with `window` their
+  /// window maxima for the flights' clearance (bed_clearance()).
+  void update_columns(double tau, bool window);
+  /// Cell k of layer j was entered (or left) at tau: marks the columns of
+  /// the map and the slots of the support sweep that may change.
+  void note_cell(int j, int k, double tau, bool entered);
+  void mark_col(int s) {
+    if (!col_dirty_[s]) {
+      col_dirty_[s] = 1;
+      col_dirty_list_.push_back(s);
+    }
+  }
+  void mark_sup(int j, int s) {
+    char& b = sup_dirty_[L_[j].offset + s];
+    if (!b) {
+      b = 1;
+      sup_dirty_list_[j].push_back(s);
+    }
+  }
+  /// Offset b of the SlotMap from the outer layer to layer j at tau.
+  double colmap_offset(int j, double tau) const {
+    return wrap2pi(slot_angle(0, 0, tau) - slot_angle(j, 0, tau)) * L_[j].inv_delta + 0.5;
+  }
+  /// Offset b of the SlotMap from layer j to layer j - 1 at tau.
+  double supmap_offset(int j, double tau) const {
+    return wrap2pi(slot_angle(j, 0, tau) - slot_angle(j - 1, 0, tau)) * L_[j - 1].inv_delta + 0.5;
+  }
+  /// out[s] = max (or min) of v over s - m .. s + m, circularly.
+  void window_extreme(const std::vector<int>& v, int m, bool max, std::vector<int>& out);
+  /// A lower bound [m] on the distance from (r, theta) at time tau to any cell
+  /// the charge can occupy before tau + skip_H_ (from the column map).
+  double bed_clearance(double r, double theta, double tau) const;
+  void sample(double tau, double w);
+  void snapshot(double tau);
+
+  // ---- inputs
+  const ChargeInput& in_;
+  CanonicalSurface canon_;
+  LinerMetrics metrics_;
+  std::vector<SegmentMetrics> seg_;
+  LinerRideTable ride_;
+  double inv_d_ = 0;
+  double R_eff_ = 0, d_ = 0, a_ = 0, omega_ = 0, J_ = 0, phi_ = 0;
+  double rho_c_ = 0;           // [kg/m3] charge bulk density (Morrell)
+  double m_ = 0;               // [kg/m] mass of one element
+  double m_sphere_ = 0;        // [kg] one media sphere of the element's mean solid density
+  double rho_solid_ = 0, rho_pulp_ = 0;
+  double mu_ = 0, gamma_ = 0;  // friction coefficient, repose angle [rad]
+  double r_i_ = 0, z_ = 0;     // Morrell's inner radius and z
+  double toe_morrell_ = 0;     // [rad] eq. 4.15
+  int variant_ = 12;           // 10, 11, 12
+  bool drag_on_ = false;
+  double y_pool_ = -kInf;      // [m] slurry level of an overflow mill
+  int N_ = 0;
+  // ---- layers and state
+  std::vector<Layer> L_;
+  int n_open_ = 0;                          // layers that may hold elements (0 .. n_open_-1)
+  std::vector<std::vector<HeldLaunch>> held_;  // [held layer][segment]
+  int n_held_layers_ = 0;
+  std::vector<int> occ_;                    // element id per slot, -1 empty
+  std::vector<double> slot_cos_, slot_sin_; // cos, sin of s delta_j per slot
+  mutable std::vector<double> dir_tau_, dir_c_, dir_s_;  // cache of slot_dir(): the phase direction at dir_tau_
+  std::vector<double> sin_fa_;              // sin of each layer's flight angle (+inf: never)
+  double tan_g_ = 0;                        // tan of the angle of repose
+  std::vector<int> elem_layer_, elem_slot_; // -1 when flying
+  std::vector<double> elem_y_entry_;        // [m] height where it last entered the charge
+  std::vector<double> elem_t_slot_;         // [s] since when it sits in its slot
+  std::vector<double> phase0_;              // [rad] phase of each layer at t = 0 (the phase is phase0 + omega t)
+  std::vector<Flight> flights_;
+  std::vector<double> flight_wake_;         // [s] per flight: check_flight() has nothing to do while t1 <= this
+  std::vector<Landing> landings_;
+  std::vector<DepartureEvent> dep_events_;
+  std::vector<int> gone_;
+  std::vector<int> moved_;                  // scratch of support_sweep
+  double t_step0_ = 0;
+  double t_step1_ = 0;                      // end of the current step
+  double dt_ = 0;
+  int substeps_ = 1;
+  int deepest_ = 0;                         // deepest layer holding an element (for the flight skip)
+  // ---- averaging window
+  double t_avg0_ = 0, t_end_ = 0;
+  bool averaging_ = false;
+  double avg_time_ = 0;
+  double energy_ = 0;                       // [J/m] work done on departing elements
+  std::vector<double> layer_count_acc_;     // element-seconds per layer
+  std::vector<long long> traj_count_;       // trajectory flights per launch layer
+  long long n_traj_flights_ = 0;
+  long long n_flights_ = 0;
+  // loads, canonical element index
+  std::vector<double> acc_N_, acc_Nc_, acc_Ng_, acc_S_, acc_NV_, acc_SV_;
+  std::vector<ImpactEvent> impacts_;
+  std::vector<double> lifter_n_, lifter_t_;  // per 2-degree bin of lifter 0's angle
+  std::vector<int> lifter_cnt_;
+  std::unique_ptr<ChargeOccupancy> occupancy_;
+  bool ring_is_layer_ = false;              // occupancy rings coincide with the layers, bins with slots
+  std::vector<int> col_;                    // column height above each outer slot, at t_map_
+  std::vector<int> colwin_;                 // max column height over outer slots s-m .. s+m
+  std::vector<int> win_pre_, win_suf_, win_val_;  // scratch of the window maxima
+  std::vector<int> active_;                 // scratch: outer slots whose column is still growing
+  std::vector<char> relax_cur_, relax_next_;  // scratch of relax_surface(): columns to visit
+  // incremental maps (docs/models/layer.md §Incremental maps)
+  std::vector<SlotMap> colmap_;             // [j] outer layer -> layer j
+  std::vector<SlotMap> supmap_;             // [j] layer j -> layer j - 1
+  std::vector<double> colmap_b_;            // offsets of colmap_ at t_map_
+  std::vector<double> supmap_b_;            // offsets of supmap_ at t_sup_
+  double t_sup_ = 0;                        // [s] time of the last support sweep
+  bool maps_ready_ = false;                 // changes are noted from the start of the run
+  bool col_full_ = true, sup_full_ = true;  // the next map / sweep is a full one
+  std::vector<char> col_dirty_;             // per outer slot
+  std::vector<int> col_dirty_list_;
+  std::vector<char> sup_dirty_;             // per slot (occ_ indexing)
+  std::vector<std::vector<int>> sup_dirty_list_;  // [layer] slots to check
+  std::vector<int> colmin_;                 // scratch of relax_surface(): window minima of col_
+  int relax_reach_ = 3;                     // [outer cells] how far a move can change what roll_target() sees
+  int col_m_ = 1;                           // half-width m of that window [slots]
+  double t_map_ = 0;                        // [s] time of the column map col_
+  double t_win_ = 0;                        // [s] time of its window maxima colwin_
+  double t_last_sample_ = 0;                // [s]
+  double skip_H_ = 0;                       // [s] longest skip of a flight past the charge
+  double r_open_min_ = 0;                   // [m] no element is ever inside this radius
+  std::vector<double> cos0_, sin0_;         // direction of outer slot s relative to slot 0
+  std::vector<double> col_mass_, col_centrifugal_;  // [kg/m], [N/m] of a column n layers high
+  // snapshots
+  std::vector<ChargeSnapshot> snaps_;
+  double next_snap_ = kInf, snap_dt_ = 0;
+  int snaps_left_ = 0;
+  std::vector<std::string> notes_;
+};
+
+// ============================================================================
+// Setup
+// ============================================================================
+
+LayerSim::LayerSim(const ChargeInput& in) : in_(in) {
+  if (!in.surface) throw InputError("", "layer model: no liner surface given");
+  const ChargeSpec& c = in.charge;
+  const ModelSpec& ms = in.model;
+  if (!(c.filling > 0 && c.filling < 1))
+    throw InputError("charge.filling", fmt::format("filling = {}: the layer model needs 0 < filling < 1", c.filling));
+  if (!(c.ball_diameter_m > 0))
+    throw InputError("charge.ball_diameter_m", fmt::format("ball_diameter_m = {}: must be > 0", c.ball_diameter_m));
+  if (!(in.mill.speed_rpm > 0))
+    throw InputError("mill.speed_rpm", fmt::format("speed_rpm = {}: must be > 0", in.mill.speed_rpm));
+  if (!(ms.time_step_s > 0) || !std::isfinite(ms.time_step_s))
+    throw InputError("model.time_step_s", fmt::format("time_step_s = {}: must be > 0", ms.time_step_s));
+  if (ms.variant == "1.0") variant_ = 10;
+  else if (ms.variant == "1.1") variant_ = 11;
+  else if (ms.variant == "1.2") variant_ = 12;
+  else throw InputError("model.variant", fmt::format("variant = \"{}\": allowed one of \"1.0\", \"1.1\", \"1.2\"", ms.variant));
+  if (!(ms.friction_coefficient >= 0 && ms.friction_coefficient < 5))
+    throw InputError("model.friction_coefficient", fmt::format("friction_coefficient = {}: allowed 0 <= value < 5", ms.friction_coefficient));
+  if (!(ms.repose_angle_deg > 0 && ms.repose_angle_deg < 90))
+    throw InputError("model.repose_angle_deg", fmt::format("repose_angle_deg = {}: allowed 0 < value < 90", ms.repose_angle_deg));
+  if (!(in.revolutions >= 0)) throw InputError("--revolutions", fmt::format("revolutions = {}: must be >= 0", in.revolutions));
+  if (!(ms.settle_revolutions >= 0))
+    throw InputError("model.settle_revolutions", fmt::format("settle_revolutions = {}: must be >= 0", ms.settle_revolutions));
+  if (ms.slurry_drag && c.discharge != Discharge::Overflow)
+    throw InputError("model.slurry_drag", "slurry_drag = \"on\" needs an overflow mill ([mill] discharge = \"overflow\"): a grate mill has no slurry pool");
+  parse_slip_law(ms.slip_model);  // refuses unknown names
+  d_ = c.ball_diameter_m;
+  a_ = 0.5 * d_;
+  inv_d_ = 1.0 / d_;
+  J_ = c.filling;
+  omega_ = in.mill.omega_rad_s();
+  mu_ = ms.friction_coefficient;
+  gamma_ = ms.repose_angle_deg * kPi / 180.0;
+  drag_on_ = ms.slurry_drag;
+}
+
+void LayerSim::setup_geometry() {
+  canon_ = make_canonical_surface(*in_.surface, in_.mill.rotation);
+  metrics_ = metrics(canon_.surface, Rotation::Ccw, 7800.0);
+  seg_ = metrics_.segments;
+  R_eff_ = 0.5 * metrics_.effective_diameter_m;
+  if (!(d_ < 0.25 * R_eff_))
+    throw InputError("charge.ball_diameter_m",
+                     fmt::format("ball_diameter_m = {} m is too large for a mill of {:.3f} m inside the liners: the layer "
+                                 "model needs at least four layers of media across the radius",
+                                 d_, 2 * R_eff_));
+  ride_ = build_liner_ride_table(canon_.surface, a_, 4);
+  phi_ = in_.mill.speed_rpm / critical_speed_rpm(2 * R_eff_);
+  const ChargeSpec& c = in_.charge;
+  // Densities (Morrell 1996): the charge bulk density sets the element mass.
+  const double rho_w = 1000.0;
+  const double w = c.slurry_solids_mass_fraction;
+  rho_pulp_ = pulp_density(w, c.ore_density_kg_m3, rho_w);
+  const double S_vol = (w / c.ore_density_kg_m3) * rho_pulp_;
+  rho_c_ = morrell_charge_density(J_, c.ball_filling, c.porosity, c.slurry_void_fill, S_vol, c.ore_density_kg_m3,
+                                  c.ball_density_kg_m3, rho_w);
+  rho_solid_ = (c.ball_filling * c.ball_density_kg_m3 + (J_ - c.ball_filling) * c.ore_density_kg_m3) / J_;
+  m_sphere_ = kPi / 6.0 * d_ * d_ * d_ * rho_solid_;
+  if (c.discharge == Discharge::Overflow) y_pool_ = -c.trunnion_radius_m;  // slurry at the trunnion (Morrell 1996)
+}
+
+void LayerSim::setup_layers() {
+  const int nl = static_cast<int>(std::floor(R_eff_ / d_));
+  L_.resize(nl);
+  std::vector<double> r(nl);
+  int off = 0;
+  for (int j = 0; j < nl; ++j) {
+    Layer& l = L_[j];
+    l.r = r[j] = R_eff_ - (j + 0.5) * d_;
+    l.S = std::max(1, static_cast<int>(std::lround(kTwoPi * l.r / d_)));  // equal-area cells of about d x d
+    l.delta = kTwoPi / l.S;
+    l.inv_delta = l.S / kTwoPi;
+    l.offset = off;
+    off += l.S;
+  }
+  occ_.assign(off, -1);
+  slot_cos_.resize(off);
+  slot_sin_.resize(off);
+  for (int j = 0; j < nl; ++j)
+    for (int q = 0; q < L_[j].S; ++q) {
+      slot_cos_[L_[j].offset + q] = std::cos(q * L_[j].delta);
+      slot_sin_[L_[j].offset + q] = std::sin(q * L_[j].delta);
+    }
+  dir_tau_.assign(nl, std::numeric_limits<double>::quiet_NaN());
+  dir_c_.assign(nl, 1.0);
+  dir_s_.assign(nl, 0.0);
+  phase0_.assign(nl, 0.0);
+  z_ = std::pow(1.0 - J_, 0.4532);
+  const double Nm = in_.mill.speed_rpm / 60.0;
+  // Morrell's toe (thesis eq. 4.15) with the guard of reference §1.
+  const double phi_c = 0.35 * (3.364 - J_);
+  const bool centrifuged = phi_ >= phi_c || phi_ >= 1.0;
+  toe_morrell_ = centrifuged ? 0.5 * kPi : morrell_toe_rad(J_, phi_);
+  // Slip law and inner radius r_i (thesis eq. 4.14 with the shoulder from
+  // McIvor, eq. 4.5, and the toe from eq. 4.15) depend on each other: a few
+  // fixed-point passes, starting from Morrell's own shoulder.
+  SlipInput si;
+  si.law = parse_slip_law(in_.model.slip_model);
+  si.mill_omega_rad_s = omega_;
+  si.mill_radius_m = R_eff_;
+  si.filling = J_;
+  si.slip_parameter = in_.model.slip_parameter;
+  double beta = std::atan(mu_);  // plain shell: held only by friction
+  {
+    double sum = 0;
+    int n = 0;
+    for (const auto& s : seg_)
+      if (s.has_lifter && std::isfinite(s.face_angle_leading_deg)) sum += s.face_angle_leading_deg, ++n;
+    if (n) beta = 0.5 * kPi - sum / n * kPi / 180.0;  // face angle to the shell
+  }
+  si.lifter_angle_rad = beta;
+  double shoulder = centrifuged ? 0.5 * kPi : morrell_shoulder_rad(J_, phi_, toe_morrell_);
+  r_i_ = centrifuged ? R_eff_ * std::sqrt(1.0 - J_) : morrell_inner_radius(R_eff_, Nm, J_, toe_morrell_, shoulder).inner_radius_m;
+  std::vector<double> w;
+  for (int it = 0; it < 6; ++it) {
+    si.inner_radius_m = r_i_;
+    w = layer_angular_speeds(si, r);
+    for (int j = 0; j < nl; ++j) L_[j].omega = w[j];
+    setup_flight_angles();
+    // the shoulder of the outer layer: mean launch angle over the segments
+    double sum = 0;
+    int n = 0;
+    if (n_held_layers_ > 0) {
+      for (const auto& h : held_[0])
+        if (h.held && h.released) sum += h.release + h.dtheta, ++n;
+    }
+    if (n == 0 && std::isfinite(L_[0].release)) sum = L_[0].release, n = 1;
+    if (centrifuged || n == 0) break;
+    shoulder = sum / n;
+    const double ri = morrell_inner_radius(R_eff_, Nm, J_, toe_morrell_, shoulder).inner_radius_m;
+    const bool done = std::abs(ri - r_i_) < 1e-4 * R_eff_;
+    r_i_ = ri;
+    if (done) break;
+  }
+  si.inner_radius_m = r_i_;
+  w = layer_angular_speeds(si, r);
+  for (int j = 0; j < nl; ++j) L_[j].omega = w[j];
+  setup_flight_angles();
+  // Which layers may hold elements: every layer that turns forward (v > 0,
+  // outside z r_i); version 1.2 keeps only those outside r_i (thesis §4.6.2).
+  n_open_ = 0;
+  for (int j = 0; j < nl; ++j) {
+    const bool open = L_[j].omega > 0 && (variant_ != 12 || L_[j].r >= r_i_);
+    if (!open) break;
+    n_open_ = j + 1;
+  }
+  // The charge must fit into the open layers; open more (slowest first) if not.
+  N_ = static_cast<int>(std::lround(J_ * metrics_.free_area_m2 / (d_ * d_)));
+  if (N_ < 1) throw InputError("charge.filling", fmt::format("filling = {} gives no element of {} m in this mill", J_, d_));
+  auto capacity = [&] {
+    long long c = 0;
+    for (int j = 0; j < n_open_; ++j) c += L_[j].S;
+    return c;
+  };
+  while (capacity() < N_ && n_open_ < nl) {
+    if (L_[n_open_].omega <= 0) L_[n_open_].omega = std::max(1e-3 * omega_, L_[n_open_ - 1].omega * 0.5);
+    ++n_open_;
+    notes_.push_back("the charge does not fit outside the inner radius; a slower layer was opened");
+  }
+  if (capacity() < N_) throw SimulationError("layer model: the charge does not fit inside the mill");
+  m_ = rho_c_ * J_ * metrics_.free_area_m2 / N_;
+  if (centrifuged) notes_.push_back(fmt::format("the mill runs at {:.3f} of critical, beyond Morrell's phi_c = {:.3f}: the charge centrifuges", phi_, phi_c));
+  sin_fa_.resize(nl);
+  for (int j = 0; j < nl; ++j) {
+    const double fa = flight_angle(j);
+    sin_fa_[j] = std::isfinite(fa) ? std::sin(fa) : kInf;
+  }
+  tan_g_ = std::tan(gamma_);
+}
+
+void LayerSim::setup_flight_angles() {
+  const int nl = static_cast<int>(L_.size());
+  const int S = static_cast<int>(seg_.size());
+  // Layers held by the lifter of a segment: the balls stacked in a pocket
+  // that still touch the lifter face, j < h / d (docs/models/layer.md).
+  std::vector<int> n_held(S, 0);
+  n_held_layers_ = 0;
+  for (int k = 0; k < S; ++k) {
+    const auto& sm = seg_[k];
+    if (sm.has_lifter && std::isfinite(sm.face_angle_leading_deg))
+      n_held[k] = std::max(1, static_cast<int>(std::ceil(sm.lifter_height_m / d_ - 1e-9)));
+    n_held_layers_ = std::max(n_held_layers_, std::min(n_held[k], nl));
+  }
+  held_.assign(n_held_layers_, std::vector<HeldLaunch>(S));
+  const double R = canon_.surface.shell_radius_m;
+  // Version 1.1: a line at the angle of repose through the flight point of
+  // the layer at r_i (thesis §4.6.1, Fig. 4-25) bounds the flight angles.
+  // Unheld layers: McIvor with beta = 0 (thesis eq. 4.5 applied to every
+  // layer, §4.4.6): an element rests on the one behind it in its layer, a
+  // radial "face", with the friction coefficient mu.
+  auto davis = [&](int j) { return mcivor_flight_angle(L_[j].omega * L_[j].omega * L_[j].r / kGravity, 0.0, mu_); };
+  double clip_bx = 0, clip_by = 0;
+  bool clip = false;
+  if (variant_ == 11) {
+    // the layer nearest r_i
+    int jb = 0;
+    for (int j = 0; j < nl; ++j)
+      if (std::abs(L_[j].r - r_i_) < std::abs(L_[jb].r - r_i_)) jb = j;
+    const double th = davis(jb);
+    if (std::isfinite(th) && L_[jb].omega > 0) {
+      clip = true;
+      clip_bx = L_[jb].r * std::cos(th);
+      clip_by = L_[jb].r * std::sin(th);
+    }
+  }
+  auto clip_angle = [&](double r) {
+    if (!clip) return kInf;
+    // B + s u, u = (cos gamma, sin gamma), meets the circle of radius r
+    const double bu = clip_bx * std::cos(gamma_) + clip_by * std::sin(gamma_);
+    const double b2 = clip_bx * clip_bx + clip_by * clip_by;
+    if (r * r <= b2) return kInf;  // inside B: not clipped
+    const double s = -bu + std::sqrt(bu * bu - b2 + r * r);
+    return std::atan2(clip_by + s * std::sin(gamma_), clip_bx + s * std::cos(gamma_));
+  };
+  double prev_min = kInf;  // flight angle of the layer outside (support rule)
+  for (int j = 0; j < nl; ++j) {
+    Layer& l = L_[j];
+    l.held = false;
+    l.rel_min = kInf;
+    l.rel_max = -kInf;
+    const double cl = clip_angle(l.r);
+    if (j < n_held_layers_) {
+      for (int k = 0; k < S; ++k) {
+        HeldLaunch& h = held_[j][k];
+        h = HeldLaunch{};
+        if (j >= n_held[k] || !(l.omega > 0)) continue;
+        const auto& sm = seg_[k];
+        h.held = true;
+        l.held = true;
+        const double r_plate = R - sm.plate_ref_thickness_m, r_crest = R - sm.max_thickness_m;
+        const double r0 = r_plate - (j + 0.5) * d_;  // ball centre stacked in the pocket
+        // a ball whose centre is above the crest bears on the crest corner:
+        // the face it feels is inclined by asin((centre height - h) / a)
+        const double above = (j + 0.5) * d_ - sm.lifter_height_m;
+        const double alpha = std::max(sm.face_angle_leading_deg * kPi / 180.0,
+                                      std::asin(std::clamp(above / a_, 0.0, 1.0)));
+        const LifterLaunch ll = lifter_launch(omega_, r0, r_crest, a_, alpha, mu_, in_.model.lifter_slide, cl);
+        h.released = ll.released;
+        if (!ll.released) continue;
+        h.release = ll.release_rad;
+        h.slide_s = ll.slide_time_s;
+        h.dtheta = ll.launch_rad - ll.release_rad;
+        h.radius = ll.launch_radius_m;
+        h.vr = ll.v_radial_m_s;
+        h.vt = ll.v_tangential_m_s;
+        l.rel_min = std::min(l.rel_min, h.release);
+        l.rel_max = std::max(l.rel_max, h.release);
+      }
+    }
+    // Unheld layers (and segments without a lifter at this layer): the layer
+    // leaves where its normal force vanishes, McIvor with beta = 0, mu = 0
+    // (Davis), but never beyond the flight point of the layer it rests on.
+    double th = l.omega > 0 ? davis(j) : kInf;
+    th = std::min(th, prev_min);
+    th = std::min(th, cl);
+    l.release = th;
+    prev_min = l.held ? std::min(l.rel_min, th) : th;
+  }
+}
+
+void LayerSim::setup_initial_fill() {
+  // The charge at rest: the N lowest cells of the open layers (ties by angle).
+  struct Cell {
+    double y, th;
+    int j, s;
+  };
+  std::vector<Cell> cells;
+  for (int j = 0; j < n_open_; ++j)
+    for (int s = 0; s < L_[j].S; ++s) {
+      const double th = s * L_[j].delta;
+      cells.push_back({L_[j].r * std::sin(th), th, j, s});
+    }
+  std::sort(cells.begin(), cells.end(), [](const Cell& x, const Cell& y) {
+    if (x.y != y.y) return x.y < y.y;
+    if (x.th != y.th) return x.th < y.th;
+    return x.j < y.j;
+  });
+  // Element ids are labels: a seeded shuffle makes sure nothing depends on them.
+  std::vector<int> ids(N_);
+  std::iota(ids.begin(), ids.end(), 0);
+  std::mt19937_64 rng(in_.seed);
+  std::shuffle(ids.begin(), ids.end(), rng);
+  elem_layer_.assign(N_, -1);
+  elem_slot_.assign(N_, -1);
+  elem_y_entry_.assign(N_, 0.0);
+  elem_t_slot_.assign(N_, 0.0);
+  for (int i = 0; i < N_; ++i) {
+    const Cell& c = cells[i];
+    enter_slot(ids[i], c.j, c.s, 0.0);
+    elem_y_entry_[ids[i]] = c.y;
+    deepest_ = std::max(deepest_, c.j);
+  }
+}
+
+void LayerSim::enter_slot(int id, int j, int s, double tau) {
+  occ(j, s) = id;
+  note_cell(j, s, tau, true);
+  elem_layer_[id] = j;
+  elem_slot_[id] = s;
+  elem_t_slot_[id] = tau;
+}
+
+void LayerSim::leave_slot(int id, int j, int s, double tau) {
+  occ(j, s) = -1;
+  note_cell(j, s, tau, false);
+  elem_layer_[id] = -1;
+  elem_slot_[id] = -1;
+  const double ta = std::max(elem_t_slot_[id], t_avg0_), tb = std::min(tau, t_end_);
+  if (!(tb > ta) || !occupancy_) return;
+  const Layer& l = L_[j];
+  layer_count_acc_[j] += tb - ta;
+  const double a0 = phase0_[j] + l.omega * ta + s * l.delta, a1 = phase0_[j] + l.omega * tb + s * l.delta;
+  const double spr = 1.0 / l.omega;
+  occupancy_->add_arc(j, a0, a1, spr, d_ * d_, m_);  // canonical frame
+}
+
+// ============================================================================
+// Flights
+// ============================================================================
+
+V LayerSim::flight_position(const Flight& f, double tau) const {
+  if (tau <= f.t0) {  // still sliding along the lifter face: between release and launch
+    const double span = f.t0 - f.t_rel;
+    const double x = span > 0 ? std::clamp((tau - f.t_rel) / span, 0.0, 1.0) : 1.0;
+    return f.p_rel + x * (f.p0 - f.p_rel);
+  }
+  const double t = tau - f.t0;
+  return V(f.p0.x() + f.v0.x() * t, f.p0.y() + f.v0.y() * t - 0.5 * kGravity * t * t);
+}
+
+V LayerSim::flight_velocity(const Flight& f, double tau) const {
+  const double t = std::max(0.0, tau - f.t0);
+  return V(f.v0.x(), f.v0.y() - kGravity * t);
+}
+
+void LayerSim::launch(int j, int s, double tau, int seg, bool relaunch) {
+  const int id = occ(j, s);
+  leave_slot(id, j, s, tau);
+  Flight f;
+  f.id = id;
+  f.from_layer = j;
+  f.t_rel = tau;
+  const double th = slot_angle(j, s, tau);
+  // the element leaves from where it is drawn: on the liner profile for the
+  // outer layer (never inside a lifter), else at its layer's radius
+  const double r_at = drawn_radius(j, th, tau);
+  f.p_rel = r_at * V(std::cos(th), std::sin(th));
+  if (seg >= 0 && held_[j][seg].slide_s > 0) {
+    const HeldLaunch& h = held_[j][seg];
+    const double tl = th + h.dtheta;
+    const V er(std::cos(tl), std::sin(tl)), et(-std::sin(tl), std::cos(tl));
+    f.t0 = tau + h.slide_s;
+    f.p0 = h.radius * er;
+    f.v0 = h.vr * er + h.vt * et;
+  } else {
+    // a held element leaves with its lifter's velocity, an unheld one with its layer's
+    const double w = seg >= 0 ? omega_ : L_[j].omega;
+    const V er(std::cos(th), std::sin(th)), et(-std::sin(th), std::cos(th));
+    f.t0 = tau;
+    f.p0 = r_at * er;
+    f.v0 = w * r_at * et;
+  }
+  f.t_check = f.t0;
+  f.t_next = f.t0;
+  // a relaunch from the charge surface: clear one diameter before the charge counts again
+  f.grace = relaunch ? f.t0 + d_ / std::max(f.v0.norm(), 0.1 * omega_ * r_at) : f.t0;
+  // Work done by the mill since the element entered the charge at rest
+  // (Morrell's energy reading of the C-model, reference §1): lift + kinetic.
+  if (!relaunch && averaging_ && f.t0 >= t_avg0_ && f.t0 < t_end_)
+    energy_ += m_ * (kGravity * (f.p0.y() - elem_y_entry_[id]) + 0.5 * f.v0.squaredNorm());
+  ++n_flights_;
+  flights_.push_back(f);
+  flight_wake_.push_back(wake_time(f));
+}
+
+void LayerSim::departures(double t0, double t1) {
+  dep_events_.clear();
+  const double dt = t1 - t0;
+  for (int j = 0; j < n_open_; ++j) {
+    Layer& l = L_[j];
+    if (!(l.omega > 0)) continue;
+    const double wdt = l.omega * dt;
+    if (l.held) {
+      // per-segment flight angles: scan the window between the lowest and highest
+      const double lo = std::min(l.rel_min, l.release), hi = std::max(l.rel_max, std::isfinite(l.release) ? l.release : -kInf);
+      if (!std::isfinite(lo)) continue;
+      const double u = wrap2pi(lo - l.phase);
+      const int s_lo = static_cast<int>(std::ceil((u - 2 * wdt) * l.inv_delta));
+      const int s_hi = static_cast<int>(std::ceil((u + (hi - lo)) * l.inv_delta));
+      for (int s = s_lo; s <= s_hi; ++s) {
+        int si = s % l.S;
+        if (si < 0) si += l.S;
+        if (occ(j, si) < 0) continue;
+        const double a0 = slot_angle(j, si, t0);
+        const double psi = a0 + wdt - mill_angle(t1);
+        const int seg = canon_.surface.segment_of_angle(psi);
+        const HeldLaunch& h = held_[j][seg];
+        const double rel = h.held ? (h.released ? h.release : kInf) : l.release;
+        if (!std::isfinite(rel)) continue;
+        const double w = std::remainder(rel - a0, kTwoPi);
+        if (w > -wdt && w <= wdt) dep_events_.push_back({t0 + w / l.omega, j, si, h.held ? seg : -1});
+      }
+    } else {
+      if (!std::isfinite(l.release)) continue;
+      // slots crossing the flight angle in this step, or in the previous one
+      // after its scan (placed there by a landing): w in (-wdt, wdt]
+      const double u = wrap2pi(l.release - l.phase);
+      const int s_lo = static_cast<int>(std::ceil((u - wdt) * l.inv_delta));
+      const int s_hi = static_cast<int>(std::ceil((u + wdt) * l.inv_delta)) - 1;
+      for (int s = s_lo; s <= s_hi; ++s) {
+        int si = s % l.S;
+        if (si < 0) si += l.S;
+        if (occ(j, si) < 0) continue;
+        const double w = u - s * l.delta;
+        dep_events_.push_back({t0 + w / l.omega, j, si, -1});
+      }
+    }
+  }
+}
+
+void LayerSim::drag_advance(Flight& f, double h) const {
+  // the pool's drag (slurry_drag.h), velocity implicit, position trapezoidal
+  SlurryDrag sd;
+  sd.fluid_density_kg_m3 = rho_pulp_;
+  sd.particle_density_kg_m3 = rho_solid_;
+  sd.diameter_m = d_;
+  const V v_new = slurry_drag_step(sd, f.v0, h);
+  f.p0 += 0.5 * h * (f.v0 + v_new);
+  f.v0 = v_new;
+  f.t0 += h;
+}
+
+bool LayerSim::liner_crossing(const V& pa, const V& va, const V& acc, double tau, double tb, double& t_hit,
+                              int& bin) const {
+  // Seen from the liner, which turns, the path over this short interval is
+  // the parabola of its relative position, velocity and acceleration at tau
+  // (centrifugal and Coriolis terms; error O(h^3)); its first crossing
+  // through the ride polyline is a quadratic root per segment
+  // (docs/models/layer.md §Impacts).
+  const V u = va - omega_ * V(-pa.y(), pa.x());                                  // relative velocity
+  const V arel = acc - 2.0 * omega_ * V(-u.y(), u.x()) + omega_ * omega_ * pa;   // relative acceleration
+  const double rot = mill_angle(tau), c = std::cos(rot), sn = std::sin(rot);
+  auto to_liner = [&](const V& x) { return V(c * x.x() + sn * x.y(), -sn * x.x() + c * x.y()); };
+  double th;
+  if (!first_ride_crossing(ride_, 0.0, to_liner(pa), to_liner(u), to_liner(arel), 0.0, tb - tau, th, bin)) return false;
+  t_hit = tau + th;
+  return true;
+}
+
+bool LayerSim::inside_charge(const V& q, double r, double theta, double tq) const {
+  if (r < r_open_min_) return false;
+  int k = static_cast<int>((R_eff_ - r) * inv_d_);
+  if (r > R_eff_) k = 0;
+  if (k >= n_open_) return false;
+  return occ(k, slot_of(k, theta, tq)) >= 0;
+}
+
+bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
+  // Each interval of the path is checked once, as soon as the steps reach its
+  // start (so the number of checks does not depend on the time step); a
+  // landing found beyond the current step is kept until the steps reach it.
+  if (f.landed) {
+    if (f.landing.t > t1) return false;
+    out = f.landing;
+    return true;
+  }
+  if (t1 <= f.t_next || t1 <= f.t0) return false;
+  if (drag_on_) return check_flight_drag(f, t1, out);
+  const double r_ride_min = ride_.min_ride_m;
+  const double sample_len = 0.5 * d_;
+  const V acc(0, -kGravity);
+  double tau = f.t_next;
+  V pa = flight_position(f, tau), va = flight_velocity(f, tau);
+  double ra = pa.norm(), tha = fast_atan2(pa.y(), pa.x());
+  while (tau < t1) {
+    const double spv = std::sqrt(va.squaredNorm());
+    // Clear of the liner and of the charge: jump by the time needed to cover
+    // the distance to the nearer (no check needed).
+    // The clearance to the liner and to the innermost open layer holds at
+    // any time; the one from the column map only for skip_H_ after it.
+    const double d_liner = r_ride_min - ra;
+    const double d_bed = ra < r_open_min_ ? r_open_min_ - ra : bed_clearance(ra, tha, tau);
+    const double dist = std::min(d_liner, d_bed);
+    if (dist > sample_len) {
+      const double sp = std::max(spv, 1e-3);
+      const double cap = (ra < r_open_min_ || d_liner <= d_bed) ? kInf : skip_H_;
+      tau += std::min(cap, (-sp + std::sqrt(sp * sp + 2 * kGravity * dist)) / kGravity);
+      f.t_next = tau;
+      if (tau >= t1) return false;
+      pa = flight_position(f, tau);
+      va = flight_velocity(f, tau);
+      ra = pa.norm();
+      tha = fast_atan2(pa.y(), pa.x());
+      continue;
+    }
+    // near something: check an interval of half a diameter, relative to the
+    // turning liner too
+    const double vx = va.x() + omega_ * pa.y(), vy = va.y() - omega_ * pa.x();
+    const double vrel = std::sqrt(vx * vx + vy * vy);
+    const double tb = tau + sample_len / std::max({spv, vrel, 1e-3});
+    const V pb = flight_position(f, tb);
+    const double rb = pb.norm(), thb = fast_atan2(pb.y(), pb.x());
+    double t_hit = kInf;
+    int bin = -1;
+    if (rb >= r_ride_min || ra >= r_ride_min) liner_crossing(pa, va, acc, tau, tb, t_hit, bin);
+    if (tb > f.grace && inside_charge(pb, rb, thb, tb)) {  // ends in an occupied cell: bisect for the entry
+      double lo = std::max(tau, f.grace), hi = tb;
+      for (int it = 0; it < 6; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        const V q = flight_position(f, mid);
+        if (inside_charge(q, q.norm(), fast_atan2(q.y(), q.x()), mid)) hi = mid;
+        else lo = mid;
+      }
+      if (lo < t_hit) t_hit = lo, bin = -1;
+    }
+    if (t_hit < kInf) {
+      Landing& l = f.landing;
+      l.t = t_hit;
+      l.bin = bin;
+      l.p = flight_position(f, t_hit);
+      l.v = flight_velocity(f, t_hit);
+      f.landed = true;
+      if (t_hit > t1) return false;
+      out = l;
+      return true;
+    }
+    tau = tb;
+    f.t_next = tau;
+    pa = pb;
+    va = flight_velocity(f, tb);
+    ra = rb;
+    tha = thb;
+    if (tau - f.t_rel > 60.0 * kTwoPi / omega_)
+      throw SimulationError(fmt::format("layer model: element {} has been in flight for {:.1f} s without landing", f.id, tau - f.t_rel));
+  }
+  return false;
+}
+
+bool LayerSim::check_flight_drag(Flight& f, double t1, Landing& out) {
+  // As check_flight, but below the slurry level the state is integrated with
+  // the drag of the pool (1 ms steps, the thesis' integration step), and over
+  // each step the path is the parabola of its mean acceleration.
+  if (t1 <= f.t_check) return false;
+  double tau = std::max(f.t_check, f.t0);
+  const double r_ride_min = ride_.min_ride_m;
+  const double sample_len = 0.5 * d_;
+  while (tau < t1) {
+    if (!f.drag) {
+      const V p = flight_position(f, tau);
+      if (p.y() < y_pool_) {  // entering the slurry pool: from here on the state is integrated
+        f.v0 = flight_velocity(f, tau);
+        f.p0 = p;
+        f.t0 = tau;
+        f.drag = true;
+      }
+    }
+    const V pa = f.drag ? f.p0 : flight_position(f, tau);
+    const V va = f.drag ? f.v0 : flight_velocity(f, tau);
+    const double ra = pa.norm();
+    const double sp = std::max({va.norm(), (va - omega_ * V(-pa.y(), pa.x())).norm(), 1e-3});
+    double h = sample_len / sp;
+    if (f.drag) h = std::min(h, 1e-3);
+    const double tb = std::min(t1, tau + h);
+    V acc(0, -kGravity);
+    Flight next = f;
+    if (f.drag) {
+      drag_advance(next, tb - tau);
+      acc = (next.v0 - f.v0) / (tb - tau);
+    }
+    const V pb = pa + va * (tb - tau) + 0.5 * acc * (tb - tau) * (tb - tau);
+    const double rb = pb.norm();
+    double t_hit = kInf;
+    int bin = -1;
+    if (rb >= r_ride_min || ra >= r_ride_min) liner_crossing(pa, va, acc, tau, tb, t_hit, bin);
+    if (inside_charge(pb, rb, fast_atan2(pb.y(), pb.x()), tb)) {
+      double lo = tau, hi = tb;
+      for (int it = 0; it < 6; ++it) {
+        const double mid = 0.5 * (lo + hi), tm = mid - tau;
+        const V q = pa + va * tm + 0.5 * acc * tm * tm;
+        if (inside_charge(q, q.norm(), fast_atan2(q.y(), q.x()), mid)) hi = mid;
+        else lo = mid;
+      }
+      if (lo < t_hit) t_hit = lo, bin = -1;
+    }
+    if (t_hit < kInf) {
+      const double tm = t_hit - tau;
+      out.t = t_hit;
+      out.bin = bin;
+      out.p = pa + va * tm + 0.5 * acc * tm * tm;
+      out.v = va + acc * tm;
+      return true;
+    }
+    if (f.drag) f = next;
+    tau = tb;
+    f.t_check = tau;
+    if (tau - f.t_rel > 60.0 * kTwoPi / omega_)
+      throw SimulationError(fmt::format("layer model: element {} has been in flight for {:.1f} s without landing", f.id, tau - f.t_rel));
+  }
+  return false;
+}
+
+void LayerSim::check_flights(double t1) {
+  landings_.clear();
+  for (int i = 0; i < static_cast<int>(flights_.size()); ++i) {
+    if (t1 <= flight_wake_[i]) continue;  // nothing to do before t1 (a compact array, no call)
+    Landing l;
+    const bool lands = check_flight(flights_[i], t1, l);
+    flight_wake_[i] = wake_time(flights_[i]);
+    if (lands) {
+      l.flight = i;
+      landings_.push_back(l);
+    }
+  }
+  std::sort(landings_.begin(), landings_.end(), [&](const Landing& x, const Landing& y) {
+    if (x.t != y.t) return x.t < y.t;
+    return flights_[x.flight].id < flights_[y.flight].id;
+  });
+  // departures and landings of this step, in the order they happen
+  std::sort(dep_events_.begin(), dep_events_.end(), [](const DepartureEvent& x, const DepartureEvent& y) {
+    if (x.t != y.t) return x.t < y.t;
+    if (x.j != y.j) return x.j < y.j;
+    return x.s < y.s;
+  });
+  size_t di = 0;
+  auto depart_until = [&](double t) {
+    for (; di < dep_events_.size() && dep_events_[di].t <= t; ++di) {
+      const DepartureEvent& e = dep_events_[di];
+      const int id = occ(e.j, e.s);
+      if (id < 0) continue;
+      // an element placed there after the slot crossed leaves when it came
+      launch(e.j, e.s, std::max(e.t, elem_t_slot_[id]), e.seg);
+    }
+  };
+  for (const Landing& l : landings_) {
+    depart_until(l.t);
+    const Flight& f = flights_[l.flight];
+    const double th = std::atan2(l.p.y(), l.p.x());
+    if (l.bin >= 0 && averaging_ && l.t >= t_avg0_) {
+      // a direct impact on the liner (docs/models/layer.md §Impacts)
+      const int e = ride_.support_element[l.bin];
+      const double rot = mill_angle(l.t);
+      const double c = std::cos(rot), s = std::sin(rot);
+      const V nl = canon_.surface.normal[e];
+      const V n(c * nl.x() - s * nl.y(), s * nl.x() + c * nl.y());
+      const V t(n.y(), -n.x());
+      const V v_liner = omega_ * V(-l.p.y(), l.p.x());
+      const V vrel = l.v - v_liner;
+      const double vn = -vrel.dot(n);
+      if (vn > 0) {
+        ImpactEvent ev;
+        ev.element = canon_.physical_element[e];
+        ev.normal_speed_m_s = vn;
+        ev.tangential_speed_m_s = std::abs(vrel.dot(t));
+        ev.mass_kg = m_sphere_;
+        ev.diameter_m = d_;
+        ev.rate_per_s = m_ / m_sphere_;  // spheres per element per metre; divided by the duration at the end
+        ev.direct = true;
+        impacts_.push_back(ev);
+      }
+    }
+    if (averaging_ && l.t >= t_avg0_) {
+      const double tf = l.t - f.t0;
+      if (tf >= 2.0 * std::sqrt(d_ / kGravity)) {  // a trajectory (docs/models/indicators.md)
+        ++traj_count_[f.from_layer];
+        ++n_traj_flights_;
+      }
+    }
+    deposit(f.id, th, l.t, l.v);
+  }
+  depart_until(t1);
+  // drop landed flights (indices in landings_ refer to the list before removal)
+  if (landings_.empty()) return;
+  // remove the landed flights (highest index first, swapping in the last)
+  gone_.clear();
+  for (const Landing& l : landings_) gone_.push_back(l.flight);
+  std::sort(gone_.begin(), gone_.end(), std::greater<int>());
+  for (const int i : gone_) {
+    if (i != static_cast<int>(flights_.size()) - 1) {
+      flights_[i] = flights_.back();
+      flight_wake_[i] = flight_wake_.back();
+    }
+    flights_.pop_back();
+    flight_wake_.pop_back();
+  }
+}
+
+// ============================================================================
+// Re-entry and foot stability
+// ============================================================================
+
+void LayerSim::deposit(int id, double theta, double tau, const V& v_land) {
+  // Re-entry: on top of the column where the path met the charge (or the liner).
+  int k = ncol(theta, tau);
+  if (k >= n_open_) {
+    // No room inside the allowed layers (version 1.2: inside r_i): the
+    // element is moved towards the toe, against the rotation (thesis §4.6.2).
+    if (!toe_ward_room(theta, tau, false, k)) throw SimulationError("layer model: no room left for a landing element");
+  }
+  // Foot stability, 1: momentum (thesis §4.4.2, Radziszewski 1998). The
+  // element keeps the part of its velocity along the charge surface relative
+  // to the surface and slides on it against Coulomb friction mu, over
+  // u^2 / (2 mu g_n), column by column, unless a taller column stops it.
+  {
+    const double c = std::cos(theta), sn = std::sin(theta);
+    const double r = L_[k].r;
+    const double ut = (-sn * v_land.x() + c * v_land.y()) - L_[k].omega * r;  // along e_t, relative to the layer
+    const double gn = std::max(0.1 * kGravity, L_[k].omega * L_[k].omega * r - kGravity * sn);  // pressing it on
+    const double dist = mu_ > 0 ? ut * ut / (2.0 * mu_ * gn) : 0.0;
+    const int n_cols = std::min(static_cast<int>(dist / d_), L_[0].S / 2);
+    if (n_cols > 0) {
+      // walk on the column map (outer cells, about one diameter each) to the
+      // first column taller than where the element slides; then check there
+      const Layer& l0 = L_[0];
+      const double ph = l0.phase + l0.omega * (t_map_ - t_step0_);
+      int s0 = static_cast<int>(wrap2pi(theta - ph + 0.5 * l0.delta) * l0.inv_delta);
+      if (s0 >= l0.S) s0 -= l0.S;
+      const int step = ut < 0 ? -1 : 1;
+      int moved = 0;
+      for (int i = 0; i < n_cols; ++i) {
+        int next = s0 + step;
+        if (next < 0) next += l0.S;
+        else if (next >= l0.S) next -= l0.S;
+        if (col_[next] > k || col_[next] >= n_open_) break;
+        s0 = next;
+        ++moved;
+      }
+      if (moved > 0) {
+        const double thn = theta + step * moved * l0.delta;
+        const int kn = ncol(thn, tau);
+        if (kn < n_open_) {
+          theta = thn;
+          k = kn;
+        }
+      }
+    }
+  }
+  place(id, k, slot_of(k, theta, tau), tau);
+}
+
+bool LayerSim::toe_ward_room(double& theta, double tau, bool holdable, int& k_out) const {
+  // Steps of one outer cell against the rotation, up to two turns. Columns
+  // the map (col_, at t_map_) shows full are passed over in one integer
+  // scan; the first one it shows with room is checked exactly (ncol()), and
+  // the scan goes on from there if the map was out of date.
+  const Layer& l0 = L_[0];
+  const int S0 = l0.S;
+  const double step = l0.delta;
+  int s0 = static_cast<int>(wrap2pi(theta - (l0.phase + l0.omega * (t_map_ - t_step0_)) + 0.5 * l0.delta) * l0.inv_delta);
+  if (s0 >= S0) s0 -= S0;
+  int i = 0;
+  while (i < 2 * S0) {
+    // the next column the map shows with room
+    int n = 0;
+    do {
+      ++n;
+      if (--s0 < 0) s0 += S0;
+    } while (col_[s0] >= n_open_ && i + n < 2 * S0);
+    i += n;
+    theta -= n * step;
+    if (col_[s0] >= n_open_) break;
+    const int kk = ncol(theta, tau);
+    if (kk >= n_open_) continue;
+    if (holdable && past_flight_angle(kk, slot_of(kk, theta, tau), tau)) continue;
+    k_out = kk;
+    return true;
+  }
+  return false;
+}
+
+bool LayerSim::past_flight_angle(int k, int s, double tau) const {
+  double c, sn;
+  slot_dir(k, s, tau, c, sn);
+  return c > 0 && sn > sin_fa_[k];
+}
+
+void LayerSim::place(int id, int k, int s, double tau) {
+  // Foot stability, 2: an element on a slope steeper than the angle of
+  // repose rolls down to the neighbouring column; one over a void falls onto
+  // the column below; one on the rising side past the flight angle of its
+  // layer (which cannot hold it there) rolls down the charge surface
+  // (docs/models/layer.md §Foot).
+  auto roll = [&] {
+    for (int it = 0; it < 400; ++it) {
+      occ(k, s) = id;  // tentatively here; neighbours are judged with it in place
+      int kn, sn;
+      const bool rolls = roll_target(k, s, tau, kn, sn);
+      occ(k, s) = -1;
+      if (!rolls) break;
+      k = kn;
+      s = sn;
+    }
+  };
+  roll();
+  // Still past the flight angle (the surface below is full): the surface flow
+  // carries it down to the toe, the first column against the rotation with
+  // room at a place its layer can hold.
+  if (past_flight_angle(k, s, tau)) {
+    double theta = slot_angle(k, s, tau);
+    int kk;
+    if (toe_ward_room(theta, tau, true, kk)) {
+      k = kk;
+      s = slot_of(kk, theta, tau);
+    }
+    roll();
+  }
+  enter_slot(id, k, s, tau);
+  double cf, sf;
+  slot_dir(k, s, tau, cf, sf);
+  elem_y_entry_[id] = L_[k].r * sf;
+  deepest_ = std::max(deepest_, k);
+  check_departure(k, s, tau);
+}
+
+bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out) {
+  const int id = occ(k, s);
+  const double th = slot_angle(k, s, tau);
+  double c, sn_th;
+  slot_dir(k, s, tau, c, sn_th);
+  const double x = L_[k].r * c, y = L_[k].r * sn_th;
+  const bool past = c > 0 && sn_th > sin_fa_[k];
+  // the angle-of-repose rule is the foot's: it acts on the toe side of the
+  // mill (the descending half); layers held by lifters do not roll
+  const bool repose = c < 0 && !L_[k].held;
+  if (!past && !repose && (k == 0 || L_[k].held)) return false;  // nothing can move it
+  bool found = false;
+  double best_y = y;
+  for (double dir : {-1.0, 1.0}) {
+    if (past && dir > 0) continue;  // past the flight angle: only down the rising side
+    const double thn = th + dir * L_[k].delta;
+    occ(k, s) = -1;  // the neighbouring column without this element
+    const int kn = ncol(thn, tau);
+    occ(k, s) = id;
+    if (kn >= n_open_) continue;
+    if (kn == 0 && k == 0 && !past) continue;  // on the liner the lifters hold it
+    const int sn = slot_of(kn, thn, tau);
+    if (kn == k && sn == s) continue;
+    double cn, snn;
+    slot_dir(kn, sn, tau, cn, snn);
+    const double xn = L_[kn].r * cn, yn = L_[kn].r * snn;
+    const double drop = y - yn, run = std::abs(x - xn);
+    if ((past || (repose && drop > tan_g_ * run)) && yn < best_y) {
+      best_y = yn;
+      kn_out = kn;
+      sn_out = sn;
+      found = true;
+    }
+  }
+  // an overhang: the place one diameter straight below is empty; it falls
+  // onto the top of the column there (on the liner the lifters hold it)
+  if (k > 0 && !L_[k].held) {
+    const V q(x, y - d_);
+    const double rq = q.norm(), thq = fast_atan2(q.y(), q.x());
+    if (!inside_charge(q, rq, thq, tau)) {
+      const int kq = ncol(thq, tau);
+      if (kq < n_open_) {
+        const int sq = slot_of(kq, thq, tau);
+        double cq, sq_th;
+        slot_dir(kq, sq, tau, cq, sq_th);
+        const double yq = L_[kq].r * sq_th;
+        if (!(kq == k && sq == s) && yq < best_y - 0.25 * d_) {
+          kn_out = kq;
+          sn_out = sq;
+          found = true;
+        }
+      }
+    }
+  }
+  return found;
+}
+
+void LayerSim::relax_surface(double tau) {
+  // Passes each way round the outer cells until nothing rolls (at most 6);
+  // in each column the top element rolls (on over as many columns as it
+  // must), then the next one, until the column is stable.
+  //
+  // Only columns whose top could roll are visited: the first pass takes the
+  // candidates of the fresh column map (relax_candidate(), a conservative
+  // test), and a move marks the columns within reach of its source and its
+  // destination (the neighbours roll_target() looks at lie within
+  // relax_reach_ outer cells) for the rest of this pass and the next. Since a
+  // column whose surroundings did not change cannot start to roll, this
+  // visits every column the full sweep would move, in the same order.
+  const Layer& l0 = L_[0];
+  const int S0 = l0.S;
+  relax_cur_.assign(S0, 0);
+  relax_next_.assign(S0, 0);
+  window_extreme(col_, relax_reach_, false, colmin_);
+  for (int s = 0; s < S0; ++s) relax_cur_[s] = relax_candidate(s, tau);
+  auto mark = [&](int c) {
+    for (int o = -relax_reach_; o <= relax_reach_; ++o) {
+      int i = c + o;
+      if (i < 0) i += S0;
+      else if (i >= S0) i -= S0;
+      relax_cur_[i] = 1;
+      relax_next_[i] = 1;
+    }
+  };
+  for (int pass = 0; pass < 6; ++pass) {
+    int moved = 0;
+    for (int q = 0; q < S0; ++q) {
+      const int s0 = pass % 2 == 0 ? q : S0 - 1 - q;
+      if (!relax_cur_[s0]) continue;
+      const double th = slot_angle(0, s0, tau);
+      for (int top = 0; top < 32; ++top) {
+        const int h = ncol(th, tau);
+        if (h == 0) break;
+        int k = h - 1, s = slot_of(k, th, tau);
+        const int id = occ(k, s);
+        if (id < 0) break;
+        int kn, sn;
+        if (!roll_target(k, s, tau, kn, sn)) break;
+        ++moved;
+        // the mill lifted it to here since it entered; it settles lower
+        double c0, s0y;
+        slot_dir(k, s, tau, c0, s0y);
+        const double y0 = L_[k].r * s0y;
+        if (averaging_ && tau >= t_avg0_) energy_ += m_ * kGravity * (y0 - elem_y_entry_[id]);
+        leave_slot(id, k, s, tau);
+        place(id, kn, sn, tau);
+        mark(s0);
+        mark(slot_of(0, slot_angle(kn, sn, tau), tau));
+        if (elem_layer_[id] >= 0) mark(slot_of(0, slot_angle(elem_layer_[id], elem_slot_[id], tau), tau));
+      }
+    }
+    if (moved == 0) break;
+    std::swap(relax_cur_, relax_next_);
+    std::fill(relax_next_.begin(), relax_next_.end(), 0);
+  }
+}
+
+bool LayerSim::relax_candidate(int s, double tau) const {
+  // Whether the top of the column above outer cell s may roll, from the
+  // fresh column map at tau. Conservative: false only where roll_target()
+  // must return false. Bounds used: at any angle within relax_reach_ outer
+  // cells of s the top found by ncol() is at least the smallest column
+  // height h_min there (every cell of layer j < h_min is occupied at the
+  // outer-cell centres, and each cell of layer j contains one of them), so a
+  // cell an element could roll into lies between the radii of layers h_min
+  // and n_open - 1.
+  const int h = col_[s];  // = ncol() at the centre of cell s: the map is fresh
+  if (h == 0) return false;
+  const int k = h - 1;
+  double c, sn;
+  slot_dir(0, s, tau, c, sn);
+  // the top's slot is within half its cell plus half an outer cell of the
+  // column's centre: allow that much angle (sin and cos change no faster)
+  const double tol = L_[k].delta + L_[0].delta;
+  if (c > -tol && sn > sin_fa_[k] - tol) return true;  // past the flight angle
+  if (k == 0 || L_[k].held) return false;              // only the past rule moves these
+  const int h_min = std::min(n_open_, colmin_[s]);  // over s +- relax_reach_
+  // an overhang: the point one diameter below the top lies in the top's ring
+  // or outside it while sin(theta) <= 0.3, where every column within reach
+  // at least as tall as this one fills it; above that it may reach into the
+  // next ring, which only a column shorter than n_open leaves room in
+  if (h_min < h || (sn > 0.3 && h < n_open_)) return true;
+  if (c >= tol) return false;  // the rising side: no repose rule
+  // the toe side, repose: the lowest and nearest a neighbouring free cell
+  // can be against the angle-of-repose line through the top
+  if (h_min >= n_open_) return false;  // full columns all round: nowhere to roll
+  const double th = slot_angle(0, s, tau);
+  const int st = slot_of(k, th, tau);
+  double ct, stp;
+  slot_dir(k, st, tau, ct, stp);
+  const double x = L_[k].r * ct, y = L_[k].r * stp;
+  const double r_out = L_[h_min].r, r_in = L_[n_open_ - 1].r;
+  const double tht = std::atan2(stp, ct);
+  for (double dir : {-1.0, 1.0}) {
+    const double thn = tht + dir * L_[k].delta;
+    const double cn = std::cos(thn), snn = std::sin(thn);
+    const double y_low = std::min(r_out * snn, r_in * snn);
+    const double x_a = std::min(r_out * cn, r_in * cn), x_b = std::max(r_out * cn, r_in * cn);
+    const double run_min = x < x_a ? x_a - x : (x > x_b ? x - x_b : 0.0);
+    if (y_low < y && y - y_low > tan_g_ * run_min - 1e-12) return true;
+  }
+  return false;
+}
+
+void LayerSim::check_departure(int j, int s, double tau) {
+  const Layer& l = L_[j];
+  if (!(l.omega > 0)) return;
+  // Where the layer cannot hold it (past its flight angle, where sin(theta)
+  // exceeds sin(flight angle)) it falls on at once. One that reaches its
+  // flight angle later is launched by departures(), which also looks one
+  // step back for elements placed after its scan.
+  double c, sn;
+  slot_dir(j, s, tau, c, sn);
+  if (sn > sin_fa_[j] + 1e-12) launch(j, s, tau, -1, true);
+}
+
+void LayerSim::support_sweep(double tau) {
+  // An element whose cell below has emptied (the layers slip past each other)
+  // falls into it: no element hangs over a void (docs/models/layer.md §Foot).
+  // Only slots whose support may have changed since the last sweep are
+  // looked at (docs/models/layer.md §Incremental maps): those entered since,
+  // those over a cell left since, and those whose cell below changed as the
+  // layers slipped (SlotMap::changed). Layer by layer outwards and in
+  // ascending slot order, as a sweep of every slot would be.
+  const bool full = sup_full_;
+  if (!full)
+    for (int j = 1; j < n_open_; ++j) {
+      const double D = (L_[j].omega - L_[j - 1].omega) * (tau - t_sup_) * L_[j - 1].inv_delta;
+      // only an element whose new cell below is empty can fall
+      const SlotMap& map = supmap_[j];
+      const double b1 = supmap_offset(j, tau);
+      const int* o = &occ_[L_[j].offset];
+      const int* ob = &occ_[L_[j - 1].offset];
+      if (!map.changed(supmap_b_[j], D, [&](int s) {
+            if (o[s] >= 0 && ob[map.cell(s, b1)] < 0) mark_sup(j, s);
+          }))
+        for (int s = 0; s < L_[j].S; ++s) mark_sup(j, s);
+    }
+  sup_full_ = false;
+  moved_.clear();
+  for (int j = 1; j < n_open_; ++j) {
+    const Layer& l = L_[j];
+    const Layer& lb = L_[j - 1];
+    const int* o = &occ_[l.offset];
+    const int* ob = &occ_[lb.offset];
+    // the cell of layer j - 1 under slot s of layer j: floor(base + s ratio)
+    // mod S_{j-1}, as slot_of()
+    const double base = supmap_offset(j, tau);
+    const SlotMap& map = supmap_[j];
+    std::vector<int>& list = sup_dirty_list_[j];
+    if (full) {
+      for (const int s : list) sup_dirty_[l.offset + s] = 0;
+      list.resize(l.S);
+      std::iota(list.begin(), list.end(), 0);
+    } else {
+      std::sort(list.begin(), list.end());
+      for (const int s : list) sup_dirty_[l.offset + s] = 0;
+    }
+    // falls from this layer mark the layer above, never this one: the list
+    // does not change while it is walked
+    for (const int s : list) {
+      const int id = o[s];
+      if (id < 0) continue;
+      if (ob[map.cell(s, base)] >= 0) continue;  // supported (the common case)
+      const double th = slot_angle(j, s, tau);
+      int k = j, sk = s;
+      while (k > 0) {
+        const int sb = slot_of(k - 1, th, tau);
+        if (occ(k - 1, sb) >= 0) break;
+        --k;
+        sk = sb;
+      }
+      if (k != j) {
+        leave_slot(id, j, s, tau);
+        enter_slot(id, k, sk, tau);
+        moved_.push_back(id);
+      }
+    }
+    list.clear();
+  }
+  for (int j = 1; j < n_open_; ++j) supmap_b_[j] = supmap_offset(j, tau);
+  t_sup_ = tau;
+  // those that fell past the flight angle of their new layer settle (after
+  // the sweep, so that each starts from its own cell)
+  for (const int id : moved_) {
+    const int k = elem_layer_[id], sl = elem_slot_[id];
+    if (k < 0 || !past_flight_angle(k, sl, tau)) continue;
+    leave_slot(id, k, sl, tau);
+    place(id, k, sl, tau);
+  }
+}
+
+void LayerSim::note_cell(int j, int k, double tau, bool entered) {
+  if (!maps_ready_) return;
+  if (!col_full_) {
+    // only columns that reach layer j (height >= j) see the change
+    if (j == 0) mark_col(k);
+    else colmap_[j].over(k, colmap_offset(j, tau), [&](int s) {
+      if (col_[s] >= j) mark_col(s);
+    });
+  }
+  if (!sup_full_) {
+    if (entered) {
+      if (j >= 1) mark_sup(j, k);
+    } else if (j + 1 < n_open_) {
+      supmap_[j + 1].over(k, supmap_offset(j + 1, tau), [&](int s) { mark_sup(j + 1, s); });
+    }
+  }
+}
+
+// ============================================================================
+// Sampling: loads, occupancy, power
+// ============================================================================
+
+void LayerSim::update_columns(double tau, bool window) {
+  // Column above each outer cell: how many layers are filled from the liner
+  // (no element hangs over a void). Incremental (docs/models/layer.md
+  // §Incremental maps): only the columns through a cell entered or left since
+  // the last map, or whose cell in some layer changed as the layers slipped
+  // (SlotMap::changed), are recomputed; a full sweep otherwise.
+  const Layer& l0 = L_[0];
+  const int S0 = l0.S;
+  bool full = col_full_;
+  // A column of height h depends on its cells in layers 0 .. h only; one
+  // whose cell in layer j <= h moved to a cell of the same occupancy keeps
+  // its height (a change of occupancy of the old cell since the last map was
+  // noted by note_cell()).
+  for (int j = 1; j < n_open_ && !full; ++j) {
+    const double D = (l0.omega - L_[j].omega) * (tau - t_map_) * L_[j].inv_delta;
+    const SlotMap& map = colmap_[j];
+    const double b0 = colmap_b_[j], b1 = colmap_offset(j, tau);
+    const int* o = &occ_[L_[j].offset];
+    full = !map.changed(b0, D, [&](int s) {
+      if (j > col_[s] || col_dirty_[s]) return;
+      if ((o[map.cell(s, b0)] >= 0) != (o[map.cell(s, b1)] >= 0)) mark_col(s);
+    });
+  }
+  for (int j = 1; j < n_open_; ++j) colmap_b_[j] = colmap_offset(j, tau);
+  if (full) {
+    const int* o0 = &occ_[l0.offset];
+    active_.clear();
+    for (int s = 0; s < S0; ++s) {
+      const bool on = o0[s] >= 0;
+      col_[s] = on;
+      if (on) active_.push_back(s);
+    }
+    for (int j = 1; j < n_open_ && !active_.empty(); ++j) {
+      const int* o = &occ_[L_[j].offset];
+      const SlotMap& map = colmap_[j];
+      const double base = colmap_b_[j];
+      size_t w = 0;
+      for (const int s : active_) {
+        if (o[map.cell(s, base)] >= 0) {
+          col_[s] = j + 1;
+          active_[w++] = s;
+        }
+      }
+      active_.resize(w);
+    }
+  } else {
+    for (const int s : col_dirty_list_) {
+      int h = 0;
+      if (occ_[l0.offset + s] >= 0) {
+        h = 1;
+        while (h < n_open_ && occ_[L_[h].offset + colmap_[h].cell(s, colmap_b_[h])] >= 0) ++h;
+      }
+      col_[s] = h;
+    }
+  }
+  for (const int s : col_dirty_list_) col_dirty_[s] = 0;
+  col_dirty_list_.clear();
+  col_full_ = false;
+  t_map_ = tau;
+  if (!window) return;
+  window_extreme(col_, col_m_, true, colwin_);
+  t_win_ = tau;
+}
+
+void LayerSim::window_extreme(const std::vector<int>& v, int m, bool max, std::vector<int>& out) {
+  // Extreme of v over s-m .. s+m (circular) for every s, by the van Herk /
+  // Gil-Werman block method: O(S) whatever m.
+  const int S = static_cast<int>(v.size());
+  m = std::min(m, (S - 1) / 2);
+  const int w = 2 * m + 1;
+  const int n = S + 2 * m;  // unrolled: position p holds slot (p - m) mod S
+  win_pre_.resize(n);
+  win_suf_.resize(n);
+  win_val_.resize(n);
+  out.resize(S);
+  // the minimum is minus the maximum of -v
+  int* val = win_val_.data();
+  int* pre = win_pre_.data();
+  int* suf = win_suf_.data();
+  if (max) {
+    std::copy(v.end() - m, v.end(), val);
+    std::copy(v.begin(), v.end(), val + m);
+    std::copy(v.begin(), v.begin() + m, val + m + S);
+  } else {
+    std::transform(v.end() - m, v.end(), val, std::negate<int>());
+    std::transform(v.begin(), v.end(), val + m, std::negate<int>());
+    std::transform(v.begin(), v.begin() + m, val + m + S, std::negate<int>());
+  }
+  for (int p0 = 0; p0 < n; p0 += w) {  // blocks [p0, p0 + w)
+    const int p1 = std::min(n, p0 + w);
+    int mx = val[p0];
+    pre[p0] = mx;
+    for (int p = p0 + 1; p < p1; ++p) pre[p] = mx = std::max(mx, val[p]);
+    mx = val[p1 - 1];
+    suf[p1 - 1] = mx;
+    for (int p = p1 - 2; p >= p0; --p) suf[p] = mx = std::max(mx, val[p]);
+  }
+  int* o = out.data();
+  if (max)
+    for (int s = 0; s < S; ++s) o[s] = std::max(suf[s], pre[s + w - 1]);  // window [s, s + w - 1] unrolled
+  else
+    for (int s = 0; s < S; ++s) o[s] = -std::max(suf[s], pre[s + w - 1]);
+}
+
+double LayerSim::bed_clearance(double r, double theta, double tau) const {
+  if (r < r_open_min_) return r_open_min_ - r;
+  const Layer& l0 = L_[0];
+  const int S0 = l0.S;
+  auto outer_slot = [&](double t) {  // outer slot at theta at time t
+    int s = static_cast<int>(wrap2pi(theta - (l0.phase + l0.omega * (t - t_step0_)) + 0.5 * l0.delta) * l0.inv_delta);
+    return s >= S0 ? s - S0 : s;
+  };
+  // The window maxima (of the map at t_win) cover the rotation of every
+  // layer over (t_win, tau + H] and two extra cells of growth by landings
+  // meanwhile.
+  {
+    const double rot_slots = omega_ * ((tau - t_win_) + skip_H_) * l0.inv_delta;
+    const double lateral = r * l0.delta * (col_m_ - 0.5 - rot_slots);
+    const int h = std::min(n_open_, colwin_[outer_slot(t_win_)] + 2);
+    const double radial = (R_eff_ - h * d_) - r;
+    if (radial >= lateral || radial > 0.5 * d_) return std::min(radial, lateral);
+  }
+  // Closer look, with the (possibly newer) map at t_map: the distance to
+  // each column within col_m cells is at least the larger of the radial gap
+  // to its top and the angular gap to it; the columns beyond are at least
+  // the angular gap to the edge away. Nearest columns first; stop once the
+  // angular gap alone exceeds the best.
+  const double rot_slots = omega_ * ((tau - t_map_) + skip_H_) * l0.inv_delta;
+  const double cell = r * l0.delta;
+  double best = cell * (col_m_ - 0.5 - rot_slots);
+  const int s = outer_slot(t_map_);
+  for (int q = 0; q <= col_m_; ++q) {
+    const double a = cell * std::max(0.0, q - 0.5 - rot_slots);
+    if (a >= best) break;
+    for (int sgn : {-1, 1}) {
+      if (q == 0 && sgn > 0) break;
+      int i = s + sgn * q;
+      if (i < 0) i += S0;
+      else if (i >= S0) i -= S0;
+      const double g = (R_eff_ - std::min(n_open_, col_[i] + 2) * d_) - r;
+      best = std::min(best, std::max(g, a));
+    }
+  }
+  return best;
+}
+
+void LayerSim::sample(double tau, double w) {
+  const double rot = mill_angle(tau);
+  // --- flying elements, for the occupancy indicators (the en-masse ones
+  // are integrated exactly as they leave their slots: leave_slot())
+  const double cell_w = d_ * d_ * w, mass_w = m_ * w;
+  for (const Flight& f : flights_) {
+    const V q = flight_position(f, tau);  // canonical frame (the indicators are mirrored at the end)
+    const int j = occupancy_->ring(q.norm());
+    occupancy_->add_to_bin(j, occupancy_->angular_bin(j, wrap2pi(fast_atan2(q.y(), q.x()))), cell_w, mass_w);
+  }
+  occupancy_->add_time(w);
+  // --- liner loads from the outer layer (thesis eqs. 4.10/4.11, 5.1/5.2),
+  // with the column heights of update_columns(tau)
+  const Layer& l0 = L_[0];
+  const int S0 = l0.S;
+  const double cr = std::cos(rot), sr = std::sin(rot);
+  const double cp = std::cos(l0.phase), sp = std::sin(l0.phase);
+  const double vslip_w = std::abs(omega_ - l0.omega);
+  V f_lifter(0, 0);
+  for (int s = 0; s < S0; ++s) {
+    const int n = col_[s];
+    if (n == 0) continue;
+    // direction of slot s: (cos, sin)(phase + s delta) from the table
+    const double c = cp * cos0_[s] - sp * sin0_[s], sn = sp * cos0_[s] + cp * sin0_[s];
+    const double W = col_mass_[n], C = col_centrifugal_[n];  // [kg/m], [N/m] (eq. 5.1)
+    const V er(c, sn), et(-sn, c);
+    const double Fr_g = -W * kGravity * sn;  // outward radial gravity (eq. 4.10 / 5.2)
+    const double Ft = W * kGravity * c;      // along the rotation, held by the liner (eq. 4.11)
+    const V F = (C + Fr_g) * er - Ft * et;   // force of the column on the liner
+    // liner frame angle of the slot: atan2 of the rotated direction
+    const double psi = fast_atan2(sn * cr - c * sr, c * cr + sn * sr);
+    const int b = ride_.bin(psi);
+    const int e = ride_.support_element[b];
+    const V& nl = canon_.surface.normal[e];
+    const V nrm(cr * nl.x() - sr * nl.y(), sr * nl.x() + cr * nl.y());
+    const double N = -F.dot(nrm);
+    if (!(N > 0)) continue;
+    const double Nc = C * (-er.dot(nrm));
+    const double S = std::abs(F.x() * nrm.y() - F.y() * nrm.x());
+    const double vslip = vslip_w * ride_.ride_radius_m[b];  // outer layer on the liner
+    acc_N_[e] += N * w;
+    acc_Nc_[e] += Nc * w;
+    acc_Ng_[e] += (N - Nc) * w;
+    acc_S_[e] += S * w;
+    acc_NV_[e] += N * vslip * w;
+    acc_SV_[e] += S * vslip * w;
+    if (canon_.surface.element_segment[e] == canon_.segment_of_physical_0) f_lifter += F;
+  }
+  // forces on lifter 0 against its angular position (thesis Figs. 4-21/4-22)
+  const double lifter_angle = rot + canon_.segment_of_physical_0 * canon_.surface.segment_angle_rad();
+  const V er0(std::cos(lifter_angle), std::sin(lifter_angle)), et0(-er0.y(), er0.x());
+  const double lifter_phys = wrap2pi(canon_.physical_angle(lifter_angle));
+  const int nb = static_cast<int>(lifter_n_.size());
+  const int b = std::clamp(static_cast<int>(lifter_phys / kTwoPi * nb), 0, nb - 1);
+  lifter_n_[b] += f_lifter.dot(er0);
+  lifter_t_[b] += -f_lifter.dot(et0);
+  lifter_cnt_[b] += 1;
+}
+
+void LayerSim::snapshot(double tau) {
+  ChargeSnapshot sn;
+  sn.time_s = tau;
+  sn.liner_angle_rad = in_.mill.sense() * omega_ * tau;
+  for (int j = 0; j < n_open_; ++j)
+    for (int s = 0; s < L_[j].S; ++s) {
+      if (occ(j, s) < 0) continue;
+      const double th = slot_angle(j, s, tau);
+      const double r = drawn_radius(j, th, tau);
+      sn.position.push_back(canon_.physical_point(V(r * std::cos(th), r * std::sin(th))));
+      sn.radius_m.push_back(a_);
+      sn.state.push_back(0);
+    }
+  for (const Flight& f : flights_) {
+    sn.position.push_back(canon_.physical_point(flight_position(f, tau)));
+    sn.radius_m.push_back(a_);
+    sn.state.push_back(tau < f.t0 ? 2 : 1);
+  }
+  snaps_.push_back(std::move(sn));
+}
+
+// ============================================================================
+// The run
+// ============================================================================
+
+ChargeResult LayerSim::run() {
+  const auto wall0 = std::chrono::steady_clock::now();
+  setup_geometry();
+  setup_layers();
+  setup_initial_fill();
+  // time step: sub-step a step the model cannot take (docs/models/layer.md §Time step)
+  const double courant = in_.model.max_courant > 0 ? in_.model.max_courant : kLayerMaxCourant;
+  const double dt_max = courant * d_ / (omega_ * R_eff_);
+  const double dt_req = in_.model.time_step_s;
+  substeps_ = dt_req > dt_max ? static_cast<int>(std::ceil(dt_req / dt_max - 1e-9)) : 1;
+  dt_ = dt_req / substeps_;
+  if (substeps_ > 1)
+    notes_.push_back(fmt::format("time_step_s = {} s moves the shell {:.2f} media diameters per step (stable up to {}): "
+                                 "sub-stepped {} times ({:.4g} s)",
+                                 dt_req, omega_ * R_eff_ * dt_req / d_, courant, substeps_, dt_));
+  const double T_rev = kTwoPi / omega_;
+  const double revs = in_.revolutions > 0 ? in_.revolutions : 2.0;
+  t_avg0_ = in_.model.settle_revolutions * T_rev;
+  t_end_ = t_avg0_ + revs * T_rev;
+  const long long n_steps = static_cast<long long>(std::ceil(t_end_ / dt_ - 1e-9));
+  t_end_ = n_steps * dt_;
+  // accumulators
+  const int ne = canon_.surface.n_elements();
+  for (auto* v : {&acc_N_, &acc_Nc_, &acc_Ng_, &acc_S_, &acc_NV_, &acc_SV_}) v->assign(ne, 0.0);
+  lifter_n_.assign(180, 0.0);
+  lifter_t_.assign(180, 0.0);
+  lifter_cnt_.assign(180, 0);
+  layer_count_acc_.assign(L_.size(), 0.0);
+  traj_count_.assign(L_.size(), 0);
+  // occupancy in the canonical (anticlockwise) frame; the angles are mirrored
+  // at the end for a clockwise mill, so that its results are the exact mirror
+  occupancy_ = std::make_unique<ChargeOccupancy>(R_eff_, d_, +1.0);
+  ring_is_layer_ = occupancy_->n_rings() >= n_open_;
+  for (int j = 0; j < n_open_ && ring_is_layer_; ++j) ring_is_layer_ = occupancy_->n_angular(j) == L_[j].S;
+  col_.assign(L_[0].S, 0);
+  colwin_.assign(L_[0].S, n_open_);
+  colmap_.assign(n_open_, SlotMap());
+  supmap_.assign(n_open_, SlotMap());
+  for (int j = 1; j < n_open_; ++j) {
+    colmap_[j] = SlotMap(L_[0].S, L_[j].S, L_[0].delta * L_[j].inv_delta);
+    supmap_[j] = SlotMap(L_[j].S, L_[j - 1].S, L_[j].delta * L_[j - 1].inv_delta);
+  }
+  colmap_b_.assign(n_open_, 0.0);
+  supmap_b_.assign(n_open_, 0.0);
+  col_dirty_.assign(L_[0].S, 0);
+  col_dirty_list_.clear();
+  sup_dirty_.assign(occ_.size(), 0);
+  sup_dirty_list_.assign(n_open_, {});
+  col_full_ = sup_full_ = true;
+  maps_ready_ = true;
+  r_open_min_ = R_eff_ - n_open_ * d_;
+  // roll_target() looks one cell of the top's layer to each side and one
+  // diameter below it; a cell of layer k spans S_0 / S_k outer cells
+  relax_reach_ = static_cast<int>(std::ceil(3.0 * L_[0].S / L_[n_open_ - 1].S)) + 1;
+  cos0_.resize(L_[0].S);
+  sin0_.resize(L_[0].S);
+  for (int s = 0; s < L_[0].S; ++s) {
+    cos0_[s] = std::cos(s * L_[0].delta);
+    sin0_[s] = std::sin(s * L_[0].delta);
+  }
+  // a column n layers high above one outer cell holds the share S_j / S_0 of a cell of each layer
+  col_mass_.assign(n_open_ + 1, 0.0);
+  col_centrifugal_.assign(n_open_ + 1, 0.0);
+  for (int j = 0; j < n_open_; ++j) {
+    const double share = static_cast<double>(L_[j].S) / L_[0].S;
+    col_mass_[j + 1] = col_mass_[j] + m_ * share;
+    col_centrifugal_[j + 1] = col_centrifugal_[j] + m_ * share * L_[j].omega * L_[j].omega * L_[j].r;
+  }
+  if (in_.record_snapshot) {
+    snaps_left_ = 36;
+    snap_dt_ = T_rev / snaps_left_;
+    next_snap_ = t_end_ - T_rev + 0.5 * snap_dt_;
+  }
+  // Support sweep and surface relaxation (foot stability) run on a fixed
+  // schedule in time, every half the time the shell takes to move one outer
+  // cell, whatever the step; loads, flights' occupancy and the column map are
+  // sampled every two degrees of mill rotation (a quadrature of the time
+  // averages). Both are independent of the time step (docs/models/layer.md
+  // §Time step).
+  const double relax_dt = 0.5 * L_[0].delta / omega_;
+  const double sample_dt = (2.0 * kPi / 180.0) / omega_;
+  // flight skips: at most two outer cells' worth of rotation; the column
+  // window must cover the rotation over a sampling interval plus a skip
+  const double w_max = omega_;
+  skip_H_ = 2.0 * L_[0].delta / w_max;
+  col_m_ = static_cast<int>(std::ceil(w_max * (sample_dt + dt_ + 2.0 * skip_H_) / L_[0].delta)) + 1;
+  t_step0_ = 0;
+  update_columns(0.0, true);
+  for (long long k = 0; k < n_steps; ++k) {
+    const double t0 = k * dt_, t1 = (k + 1) * dt_;
+    t_step0_ = t0;
+    t_step1_ = t1;
+    averaging_ = t1 > t_avg0_;
+    departures(t0, t1);
+    check_flights(t1);
+    // advance the layers to t1
+    for (int j = 0; j < n_open_; ++j) L_[j].phase = wrap2pi(L_[j].phase + L_[j].omega * dt_);
+    t_step0_ = t1;
+    if (std::floor(t1 / relax_dt) > std::floor(t0 / relax_dt)) {
+      support_sweep(t1);
+      update_columns(t1, false);  // fresh column tops for the relaxation
+      relax_surface(t1);
+    }
+    if (std::floor(t1 / sample_dt) > std::floor(t0 / sample_dt) || k + 1 == n_steps) {
+      update_columns(t1, true);
+      if (averaging_) {
+        const double w = t1 - std::max(t_last_sample_, t_avg0_);
+        avg_time_ += w;
+        sample(t1, w);
+      }
+      t_last_sample_ = t1;
+    }
+    if (t1 >= next_snap_ && snaps_left_ > 0) {
+      snapshot(t1);
+      next_snap_ += snap_dt_;
+      --snaps_left_;
+    }
+  }
+  // ---- the en-masse elements still in their slots: their arcs up to the end
+  for (int j = 0; j < n_open_; ++j)
+    for (int s = 0; s < L_[j].S; ++s) {
+      const int id = occ(j, s);
+      if (id < 0) continue;
+      leave_slot(id, j, s, t_end_);
+      enter_slot(id, j, s, t_end_);
+    }
+  // ---- conservation (always checked: a lost element is a bug, not a result)
+  long long en_masse = 0;
+  for (int x : occ_) en_masse += x >= 0;
+  if (en_masse + static_cast<long long>(flights_.size()) != N_)
+    throw SimulationError(fmt::format("layer model lost elements: {} en masse + {} in flight != {}", en_masse,
+                                      flights_.size(), N_));
+  // ---- results
+  ChargeResult res;
+  res.model = "layer";
+  Indicators& I = res.indicators;
+  const OccupancyIndicators oc = occupancy_->evaluate();
+  auto phys_deg = [&](double deg) {
+    double d = canon_.physical_angle(deg * kPi / 180.0) * 180.0 / kPi;
+    d = std::fmod(d, 360.0);
+    return d < 0 ? d + 360.0 : d;
+  };
+  I.toe_deg = phys_deg(oc.toe_deg);
+  I.shoulder_deg = phys_deg(oc.shoulder_deg);
+  I.com_angle_deg = phys_deg(oc.com_angle_deg);
+  I.com_radius_m = oc.com_radius_m;
+  I.charge_area_m2 = oc.charge_area_m2;
+  I.n_layers = oc.n_layers;
+  I.diameter_eff_m = 2 * R_eff_;
+  I.fraction_critical = phi_;
+  I.inner_radius_m = r_i_;
+  // power (per metre, then the full mill)
+  const double L = in_.mill.length_m;
+  double pool_w_per_m = 0;
+  if (in_.charge.discharge == Discharge::Overflow) {
+    // slurry pool: the non-charge bins below the slurry level (thesis eq. 4.4)
+    const ChargeOccupancy& o = *occupancy_;
+    for (int j = 0; j < o.n_rings(); ++j)
+      for (int i = 0; i < o.n_angular(j); ++i) {
+        if (o.occupancy(j, i) >= oc.threshold) continue;
+        const double rc = o.ring_mid_radius(j), tc = (i + 0.5) * kTwoPi / o.n_angular(j);
+        if (rc * std::sin(tc) > y_pool_) continue;
+        // canonical frame: x > 0 on the rising side, where the pool would resist
+        pool_w_per_m += omega_ * kGravity * rho_pulp_ * o.bin_area(j) * rc * std::cos(tc);
+      }
+  }
+  // Net power (thesis eq. 4.1): the charge by its torque arm (eq. 4.3), as the
+  // thesis' simulator, plus the slurry pool (eq. 4.4), from the time-averaged
+  // mass of the en-masse bins at their centres. The second figure is the rate
+  // of lift and kinetic energy given to the elements that leave the charge:
+  // Morrell's energy reading of his C-model (reference §1).
+  double arm_w_per_m = 0;
+  {
+    const ChargeOccupancy& o = *occupancy_;
+    double arm = 0;  // [kg m / m] sum m x of the en-masse charge, physical frame
+    for (int j = 0; j < o.n_rings(); ++j)
+      for (int i = 0; i < o.n_angular(j); ++i) {
+        if (o.occupancy(j, i) < oc.threshold) continue;
+        const double tc = (i + 0.5) * kTwoPi / o.n_angular(j);
+        arm += o.mass(j, i) * o.ring_mid_radius(j) * std::cos(tc);
+      }
+    arm_w_per_m = omega_ * kGravity * arm;
+  }
+  const double net_w_per_m = arm_w_per_m + pool_w_per_m;
+  I.net_power_w_per_m = net_w_per_m;
+  I.net_power_kw = net_w_per_m * L / 1000.0;
+  I.slurry_pool_power_kw = pool_w_per_m * L / 1000.0;
+  I.alt_net_power_kw = ((avg_time_ > 0 ? energy_ / avg_time_ : 0.0) + pool_w_per_m) * L / 1000.0;
+  I.no_load_power_kw = morrell_no_load_power_kw(2 * R_eff_, phi_, L, in_.charge.cone_length_m);
+  I.gross_power_kw = I.no_load_power_kw + I.net_power_kw;
+  // layers, trajectories, speeds
+  int n_traj = 0;
+  for (size_t j = 0; j < traj_count_.size(); ++j)
+    if (n_traj_flights_ > 0 && traj_count_[j] >= 0.01 * n_traj_flights_) ++n_traj;
+  I.n_trajectories = n_traj;
+  for (int j = 0; j < n_open_; ++j)
+    if (avg_time_ > 0 && layer_count_acc_[j] / avg_time_ >= 1.0) I.layer_speed_rpm.push_back(L_[j].omega * 60.0 / kTwoPi);
+  // forces on lifter 0
+  for (size_t b = 0; b < lifter_n_.size(); ++b) {
+    if (lifter_cnt_[b] == 0) continue;
+    I.lifter_force_angle_deg.push_back((b + 0.5) * 360.0 / lifter_n_.size());
+    I.lifter_normal_force_n_per_m.push_back(lifter_n_[b] / lifter_cnt_[b]);
+    I.lifter_tangential_force_n_per_m.push_back(lifter_t_[b] / lifter_cnt_[b]);
+  }
+  // liner loads on the physical surface
+  LinerLoads& LL = res.loads;
+  LL.reset(in_.surface->n_elements(), avg_time_);
+  if (avg_time_ > 0) {
+    for (int e = 0; e < ne; ++e) {
+      const int pe = canon_.physical_element[e];
+      LL.normal_force_n_per_m[pe] = acc_N_[e] / avg_time_;
+      LL.centrifugal_force_n_per_m[pe] = acc_Nc_[e] / avg_time_;
+      LL.gravitational_force_n_per_m[pe] = acc_Ng_[e] / avg_time_;
+      LL.shear_force_n_per_m[pe] = acc_S_[e] / avg_time_;
+      LL.normal_slip_power_w_per_m[pe] = acc_NV_[e] / avg_time_;
+      LL.shear_work_rate_w_per_m[pe] = acc_SV_[e] / avg_time_;
+      LL.slip_speed_m_s[pe] = acc_N_[e] > 0 ? acc_NV_[e] / acc_N_[e] : 0.0;
+    }
+    LL.impacts = std::move(impacts_);
+    for (auto& ev : LL.impacts) ev.rate_per_s /= avg_time_;
+  }
+  LL.has_impacts = true;
+  I.direct_impact_fraction = n_flights_ > 0 ? static_cast<double>(LL.impacts.size()) / n_flights_ : 0.0;
+  res.snapshots = std::move(snaps_);
+  res.notes = notes_;
+  RunStats& st = res.stats;
+  st.simulated_s = t_end_;
+  st.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  st.realtime_ratio = st.wall_s > 0 ? st.simulated_s / st.wall_s : 0.0;
+  st.steps = n_steps;
+  st.time_step_s = dt_;
+  st.substeps = substeps_;
+  st.elements = N_;
+  st.flights = n_flights_;
+  st.charge_mass_kg_per_m = N_ * m_;
+  return res;
+}
+
+}  // namespace
+
+ChargeResult LayerModel::run(const ChargeInput& in) const {
+  LayerSim sim(in);
+  return sim.run();
+}
+
+std::unique_ptr<ChargeModel> make_layer_model() { return std::make_unique<LayerModel>(); }
+
+double layer_model_max_time_step(const ChargeInput& in, double effective_radius_m) {
+  return kLayerMaxCourant * in.charge.ball_diameter_m / (in.mill.omega_rad_s() * effective_radius_m);
+}
+
+}  // namespace linerlife

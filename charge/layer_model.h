@@ -1,0 +1,39 @@
+// layer_model.h - the thesis' real-time charge motion simulator (Arekar 2004,
+// chapters 3-4, §5.5.1, Fig. 5-8; Radziszewski's agglomerated approach),
+// versions 1.0, 1.1 (shoulder clipping) and 1.2 (layer adjustment) of thesis
+// §4.6. Equations, sources and every modelling choice: docs/models/layer.md.
+//
+// In short: the charge is cut into agglomerated elements of one media
+// diameter square (equal area, "equivalent volume") on concentric layers
+// inside the liner; each layer turns rigidly at its slip-model speed; an
+// element leaves its layer at the layer's flight angle (McIvor, thesis eq.
+// 4.5; the lifter face angle and height for layers held by lifters), flies a
+// ballistic parabola, re-enters the en-masse charge where the parabola first
+// meets it (or the liner: an impact, found by exact parabola-polyline
+// intersection) and settles there by the foot-stability rule. Liner loads
+// accumulate every step from the outer layer.
+#pragma once
+
+#include <memory>
+
+#include "charge/charge_model.h"
+
+namespace linerlife {
+
+class LayerModel : public ChargeModel {
+ public:
+  ChargeResult run(const ChargeInput& in) const override;
+};
+
+std::unique_ptr<ChargeModel> make_layer_model();
+
+/// The largest stable time step [s] of the layer model for this input: the
+/// one at which the shell moves kMaxCourant media diameters per step
+/// (docs/models/layer.md §Time step).
+double layer_model_max_time_step(const ChargeInput& in, double effective_radius_m);
+
+/// Courant number (shell travel per step / media diameter) above which the
+/// layer model sub-steps (from the time-step study, docs/models/layer.md).
+constexpr double kLayerMaxCourant = 0.45;
+
+}  // namespace linerlife

@@ -1,0 +1,219 @@
+#include "charge/liner_ride_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geometry/errors.h"
+#include "geometry/mill.h"
+
+namespace linerlife {
+namespace {
+
+using V = Eigen::Vector2d;
+constexpr double kTwoPi = 2.0 * kPi;
+
+double wrap_2pi(double a) {
+  a = std::fmod(a, kTwoPi);
+  return a < 0 ? a + kTwoPi : a;
+}
+
+/// atan2 to about 1e-5 rad, enough to pick the bins to search.
+inline double fast_atan2(double y, double x) {
+  const double ax = std::abs(x), ay = std::abs(y);
+  const double mx = std::max(ax, ay), mn = std::min(ax, ay);
+  if (mx == 0) return 0;
+  const double a = mn / mx, s = a * a;
+  double r = ((((((-0.0040540580 * s + 0.0218612288) * s - 0.0559098861) * s + 0.0964200441) * s - 0.1390853351) * s +
+               0.1994653599) * s - 0.3332985605) * s * a + a;
+  if (ay > ax) r = 0.5 * kPi - r;
+  if (x < 0) r = kPi - r;
+  return y < 0 ? -r : r;
+}
+
+/// Radius at which the ray r u (r >= 0) first enters the capsule of radius a
+/// round segment AB; +inf if it does not. The origin must lie outside.
+double ray_capsule_entry(const V& u, const V& A, const V& B, double a) {
+  double best = std::numeric_limits<double>::infinity();
+  const V ab = B - A;
+  const double l2 = ab.squaredNorm();
+  if (l2 > 0) {
+    const V n = V(-ab.y(), ab.x()) / std::sqrt(l2);
+    const double un = u.dot(n);
+    if (std::abs(un) > 1e-14) {
+      for (double side : {-1.0, 1.0}) {
+        const double r = (A.dot(n) + side * a) / un;
+        if (r <= 0 || r >= best) continue;
+        const double t = (r * u - A).dot(ab) / l2;
+        if (t >= 0 && t <= 1) best = r;
+      }
+    }
+  }
+  for (const V* c : {&A, &B}) {
+    const double uc = u.dot(*c);
+    const double disc = uc * uc - c->squaredNorm() + a * a;
+    if (disc < 0) continue;
+    const double r = uc - std::sqrt(disc);
+    if (r > 0 && r < best) best = r;
+  }
+  return best;
+}
+
+}  // namespace
+
+int LinerRideTable::bin(double psi) const {
+  int b = static_cast<int>(std::floor(psi * inv_bin));
+  b %= n_bins;
+  return b < 0 ? b + n_bins : b;
+}
+
+LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_per_disc_radius) {
+  if (!(a > 0)) throw InputError("charge.ball_diameter_m", "the media diameter must be positive");
+  LinerRideTable t;
+  t.disc_radius_m = a;
+  const double R = s.shell_radius_m;
+  const double want = kTwoPi * R / (a / bins_per_disc_radius);
+  int n = 1024;
+  while (n < want && n < (1 << 16)) n <<= 1;
+  t.n_bins = n;
+  t.bin_rad = kTwoPi / n;
+  t.inv_bin = n / kTwoPi;
+  t.edge_radius_m.assign(n, std::numeric_limits<double>::infinity());
+  std::vector<int> edge_element(n, -1);
+  t.cos_e.resize(n);
+  t.sin_e.resize(n);
+  for (int b = 0; b < n; ++b) {
+    const double c = b * t.bin_rad;
+    t.cos_e[b] = std::cos(c);
+    t.sin_e[b] = std::sin(c);
+  }
+  // Each element's capsule covers a short arc of angles: its endpoints' angles
+  // widened by the angle the disc subtends at its nearest point.
+  for (int e = 0; e < s.n_elements(); ++e) {
+    const V& A = s.nodes[e];
+    const V& B = s.nodes[s.next(e)];
+    const double ra = A.norm(), rb = B.norm();
+    const double rmin = std::max(1e-9, std::min(ra, rb) - a);
+    const double widen = rmin > a ? std::asin(a / rmin) : kPi;
+    const double pa = std::atan2(A.y(), A.x());
+    double dp = std::atan2(B.y(), B.x()) - pa;
+    dp = std::remainder(dp, kTwoPi);
+    const double lo = (dp >= 0 ? pa : pa + dp) - widen;
+    const double span = std::abs(dp) + 2.0 * widen;
+    const int b0 = static_cast<int>(std::floor(lo * t.inv_bin)) - 1;
+    const int nb = static_cast<int>(std::ceil(span * t.inv_bin)) + 2;
+    for (int k = 0; k <= nb; ++k) {
+      int b = (b0 + k) % n;
+      if (b < 0) b += n;
+      const V u(t.cos_e[b], t.sin_e[b]);
+      const double r = ray_capsule_entry(u, A, B, a);
+      if (r < t.edge_radius_m[b]) {
+        t.edge_radius_m[b] = r;
+        edge_element[b] = e;
+      }
+    }
+  }
+  // a bin keeps the smaller of its edges, and the element touched there
+  t.ride_radius_m.resize(n);
+  t.support_element.resize(n);
+  for (int b = 0; b < n; ++b) {
+    const int b1 = b + 1 == n ? 0 : b + 1;
+    const bool left = t.edge_radius_m[b] <= t.edge_radius_m[b1];
+    t.ride_radius_m[b] = left ? t.edge_radius_m[b] : t.edge_radius_m[b1];
+    t.support_element[b] = left ? edge_element[b] : edge_element[b1];
+  }
+  t.block_min_ride_m.assign((n + LinerRideTable::kBlock - 1) / LinerRideTable::kBlock,
+                            std::numeric_limits<double>::infinity());
+  for (int b = 0; b < n; ++b) {
+    double& m = t.block_min_ride_m[b / LinerRideTable::kBlock];
+    m = std::min(m, t.ride_radius_m[b]);
+  }
+  t.min_ride_m = std::numeric_limits<double>::infinity();
+  t.max_ride_m = 0;
+  for (int b = 0; b < n; ++b) {
+    if (!std::isfinite(t.ride_radius_m[b]))
+      throw SimulationError("liner ride table: a ray from the mill axis meets no liner element; the surface is not a closed ring");
+    t.min_ride_m = std::min(t.min_ride_m, t.ride_radius_m[b]);
+    t.max_ride_m = std::max(t.max_ride_m, t.ride_radius_m[b]);
+  }
+  return t;
+}
+
+bool first_ride_crossing(const LinerRideTable& t, double rot, const V& p0, const V& v0, const V& acc, double ta,
+                         double tb, double& t_hit, int& bin_hit) {
+  const V pa = p0 + v0 * ta + 0.5 * acc * ta * ta;
+  const V pb = p0 + v0 * tb + 0.5 * acc * tb * tb;
+  const double psa = fast_atan2(pa.y(), pa.x()) - rot, psb = fast_atan2(pb.y(), pb.x()) - rot;
+  double d = std::remainder(psb - psa, kTwoPi);
+  // the polar angle of a parabola arc can turn by more than the chord says
+  // when it passes close to the axis; such arcs are far from the liner, and
+  // the caller only asks near it.
+  const double lo = d >= 0 ? psa : psa + d;
+  double lw = lo < 0 ? lo + kTwoPi : lo;
+  if (lw >= kTwoPi) lw -= kTwoPi;
+  if (lw < 0 || lw >= kTwoPi) lw = wrap_2pi(lw);
+  const int b0 = static_cast<int>(lw * t.inv_bin) - 1;
+  const int nb = static_cast<int>(std::ceil(std::abs(d) * t.inv_bin)) + 3;
+  const double c = std::cos(rot), s = std::sin(rot);
+  // quick reject: the arc stays inside the smallest ride radius of the bins it spans
+  {
+    const double rmax2 = std::max(pa.squaredNorm(), pb.squaredNorm());
+    const double tm = 0.5 * (ta + tb);
+    const Eigen::Vector2d pm = p0 + v0 * tm + 0.5 * acc * tm * tm;
+    const double rmax = std::sqrt(std::max(rmax2, pm.squaredNorm())) + 0.125 * (pb - pa).norm();
+    if (rmax < t.min_ride_m) return false;
+    const int B = LinerRideTable::kBlock;
+    const int nblk = static_cast<int>(t.block_min_ride_m.size());
+    const int k0 = (b0 < 0 ? b0 + t.n_bins : b0) / B, k1 = ((b0 + nb + 1) % t.n_bins + t.n_bins) % t.n_bins / B;
+    double mn = std::numeric_limits<double>::infinity();
+    for (int k = k0;; k = (k + 1) % nblk) {
+      mn = std::min(mn, t.block_min_ride_m[k]);
+      if (k == k1) break;
+    }
+    if (rmax < mn) return false;
+  }
+  bool found = false;
+  double best = tb;
+  for (int k = 0; k <= nb; ++k) {
+    int b = (b0 + k) % t.n_bins;
+    if (b < 0) b += t.n_bins;
+    const int b1 = b + 1 == t.n_bins ? 0 : b + 1;
+    const V q1l = t.point(b), q2l = t.point(b1);
+    const V q1(c * q1l.x() - s * q1l.y(), s * q1l.x() + c * q1l.y());
+    const V q2(c * q2l.x() - s * q2l.y(), s * q2l.x() + c * q2l.y());
+    const V e = q2 - q1;
+    const V m(-e.y(), e.x());  // points into the mill (polyline runs anticlockwise)
+    // f(t) = (p(t) - q1) . m: > 0 inside, crossing outward where f falls through 0.
+    const double A2 = 0.5 * acc.dot(m), A1 = v0.dot(m), A0 = (p0 - q1).dot(m);
+    double roots[2];
+    int nr = 0;
+    if (std::abs(A2) < 1e-300) {
+      if (std::abs(A1) > 0) roots[nr++] = -A0 / A1;
+    } else {
+      const double disc = A1 * A1 - 4 * A2 * A0;
+      if (disc >= 0) {
+        const double sq = std::sqrt(disc);
+        const double qq = -0.5 * (A1 + (A1 >= 0 ? sq : -sq));
+        roots[nr++] = qq / A2;
+        if (qq != 0) roots[nr++] = A0 / qq;
+      }
+    }
+    for (int i = 0; i < nr; ++i) {
+      const double r = roots[i];
+      if (!(r > ta) || r > best) continue;
+      const double slope = 2 * A2 * r + A1;  // df/dt
+      if (slope >= 0) continue;               // moving inward: not an entry into the liner
+      const V p = p0 + v0 * r + 0.5 * acc * r * r;
+      const double l2 = e.squaredNorm();
+      const double u = l2 > 0 ? (p - q1).dot(e) / l2 : 0;
+      if (u < -1e-9 || u > 1 + 1e-9) continue;
+      best = r;
+      bin_hit = b;
+      found = true;
+    }
+  }
+  if (found) t_hit = best;
+  return found;
+}
+
+}  // namespace linerlife

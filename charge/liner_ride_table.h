@@ -1,0 +1,64 @@
+// liner_ride_table.h - the liner as a disc of the media size sees it, looked
+// up by angle: for every polar angle psi of the liner frame, the largest radius
+// at which the centre of a disc of radius a can sit without overlapping the
+// liner polyline ("ride radius"), and the surface element it then touches.
+//
+// Built once per run (per surface); every lookup afterwards is O(1), which is
+// what lets the layer model place elements on the real (worn) profile and find
+// where flights land at real-time speed (docs/models/layer.md §Geometry).
+//
+// Frame: the liner frame of the surface (mill frame at t = 0), angles
+// anticlockwise from +x. Bin b covers [b h, (b + 1) h), h = 2 pi / n_bins.
+// The ride radius is computed exactly at the bin edges; a bin stores the
+// smaller of its two edges (so a disc placed anywhere in the bin at that
+// radius does not overlap the liner where the profile is monotone over the
+// bin), and the ride polyline used for crossings joins the edge points.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "geometry/liner_surface.h"
+
+namespace linerlife {
+
+struct LinerRideTable {
+  double disc_radius_m = 0;          // [m] a
+  int n_bins = 0;
+  double bin_rad = 0;                // [rad] h
+  double inv_bin = 0;                // [1/rad]
+  std::vector<double> ride_radius_m; // [m] per bin: the smaller of its edges
+  std::vector<int> support_element;  // surface element touched, per bin
+  std::vector<double> edge_radius_m; // [m] exact ride radius at the edge angle b h
+  std::vector<double> cos_e, sin_e;  // direction of each edge
+  double min_ride_m = 0;             // [m] smallest ride radius (over lifter tops)
+  double max_ride_m = 0;             // [m] largest ride radius (deepest pocket)
+  static constexpr int kBlock = 16;  // bins per block of block_min_ride_m
+  std::vector<double> block_min_ride_m;  // [m] smallest ride radius of each block of kBlock bins
+
+  /// Bin of angle psi [rad] (any value).
+  int bin(double psi) const;
+  double ride(double psi) const { return ride_radius_m[bin(psi)]; }
+  int support(double psi) const { return support_element[bin(psi)]; }
+  /// Ride point at edge b (liner frame) [m].
+  Eigen::Vector2d point(int b) const { return edge_radius_m[b] * Eigen::Vector2d(cos_e[b], sin_e[b]); }
+};
+
+/// Builds the table for discs of radius `disc_radius_m` with about
+/// `bins_per_disc_radius` bins per disc radius along the shell (at least 1024,
+/// a power of two). Exact disc-segment geometry: each element is a capsule of
+/// radius a and the ray from the axis enters the first capsule at the ride radius.
+LinerRideTable build_liner_ride_table(const LinerSurface& s, double disc_radius_m, int bins_per_disc_radius = 8);
+
+/// First crossing, within (t_a, t_b], of the parabola p(t) = p0 + v0 t + 1/2 acc t^2
+/// (fixed frame, t from the parabola's origin) outward through the ride polyline
+/// rotated by `rotation_rad` (liner frame -> fixed frame), searched over the
+/// bins between the polar angles of p(t_a) and p(t_b) (plus one on each side).
+/// Returns false if there is none; otherwise the crossing time and the bin.
+/// Exact: each ride segment is a straight line and the crossing a quadratic root.
+bool first_ride_crossing(const LinerRideTable& t, double rotation_rad, const Eigen::Vector2d& p0,
+                         const Eigen::Vector2d& v0, const Eigen::Vector2d& acc, double t_a, double t_b, double& t_hit,
+                         int& bin_hit);
+
+}  // namespace linerlife

@@ -1,0 +1,99 @@
+// SlotMap: which cell of a lower ring lies under each cell of an upper ring of
+// the layer model, and which of those relations can change when the two
+// rings turn against each other. Internal to the layer model
+// (docs/models/layer.md §Incremental maps); header-only so that it can be
+// unit-tested.
+//
+// The upper ring has S_a cells, the lower S_b; cell s of the upper ring lies
+// over cell floor(b + s ratio) mod S_b of the lower one, where
+// ratio = delta_a / delta_b (cell angles) and the offset b = (phase_a -
+// phase_b) / delta_b + 1/2 changes as the rings slip. Between two offsets
+// only the cells whose fractional part frac(b + s ratio) crosses an integer
+// change; with the fractional parts frac(s ratio) sorted once, they form one
+// or two contiguous runs found by binary search, so keeping a map up to date
+// costs O(changes + log S) instead of O(S).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+namespace linerlife {
+
+class SlotMap {
+ public:
+  /// Slack [cells] added to every query so that rounding never hides a change.
+  static constexpr double kEps = 1e-6;
+
+  SlotMap() = default;
+  SlotMap(int S_a, int S_b, double ratio) : S_a_(S_a), S_b_(S_b), ratio_(ratio) {
+    frac_.resize(S_a);
+    order_.resize(S_a);
+    std::iota(order_.begin(), order_.end(), 0);
+    std::vector<double> f(S_a);
+    for (int s = 0; s < S_a; ++s) {
+      const double x = s * ratio;
+      f[s] = x - std::floor(x);
+    }
+    std::sort(order_.begin(), order_.end(), [&](int a, int b) { return f[a] != f[b] ? f[a] < f[b] : a < b; });
+    for (int i = 0; i < S_a; ++i) frac_[i] = f[order_[i]];
+  }
+
+  int upper_cells() const { return S_a_; }
+  int lower_cells() const { return S_b_; }
+  double ratio() const { return ratio_; }
+
+  /// The lower cell under upper cell s at offset b, 0 <= b < S_b + 1.
+  int cell(int s, double b) const {
+    int k = static_cast<int>(b + s * ratio_);
+    while (k >= S_b_) k -= S_b_;
+    return k;
+  }
+
+  /// Calls f(s) for every upper cell s whose lower cell may differ between
+  /// the offsets b0 and b0 + D (D: the unwrapped change of the offset). A
+  /// superset: cells within kEps of a boundary are included. Returns false
+  /// (and calls nothing) when |D| is too large for the runs to be reliable;
+  /// the caller then treats every cell as changed.
+  template <class F>
+  bool changed(double b0, double D, F&& f) const {
+    if (!(std::abs(D) < 0.5)) return false;
+    if (D == 0) return true;
+    // frac(b0 + s ratio) = frac(fb + frac(s ratio)) must lie in [lo, lo + len) (mod 1)
+    const double fb = b0 - std::floor(b0);
+    const double lo = D > 0 ? 1.0 - D - kEps : -kEps;
+    const double len = std::abs(D) + 2 * kEps;
+    double a = lo - fb;  // the same interval for frac(s ratio)
+    a -= std::floor(a);
+    visit(a, std::min(1.0, a + len), f);
+    if (a + len > 1.0) visit(0.0, a + len - 1.0, f);
+    return true;
+  }
+
+  /// Calls f(s) for every upper cell s that may lie over lower cell k at
+  /// offset b (a superset: one extra cell each side).
+  template <class F>
+  void over(int k, double b, F&& f) const {
+    for (int K : {k, k + S_b_}) {
+      const int lo = static_cast<int>(std::ceil((K - b) / ratio_)) - 1;
+      const int hi = static_cast<int>(std::floor((K + 1 - b) / ratio_)) + 1;
+      for (int s = std::max(lo, 0); s <= std::min(hi, S_a_ - 1); ++s) f(s);
+    }
+  }
+
+ private:
+  template <class F>
+  void visit(double x0, double x1, F&& f) const {
+    auto i = std::lower_bound(frac_.begin(), frac_.end(), x0) - frac_.begin();
+    const auto n = static_cast<long>(frac_.size());
+    for (; i < n && frac_[i] < x1; ++i) f(order_[i]);
+  }
+
+  int S_a_ = 0, S_b_ = 0;
+  double ratio_ = 1;
+  std::vector<double> frac_;  // frac(s ratio), ascending
+  std::vector<int> order_;    // the s of each
+};
+
+}  // namespace linerlife

@@ -1,0 +1,203 @@
+#include "forecast/calibrate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Dense>
+#include <fmt/format.h>
+
+#include "geometry/errors.h"
+
+namespace linerlife {
+
+using V = Eigen::Vector2d;
+
+std::vector<double> profile_residuals(const std::vector<V>& measured, const std::vector<V>& sim) {
+  std::vector<double> out;
+  out.reserve(measured.size());
+  for (const V& q : measured) {
+    double best = std::numeric_limits<double>::infinity(), sign = 1;
+    for (size_t i = 0; i + 1 < sim.size(); ++i) {
+      const V ab = sim[i + 1] - sim[i];
+      const double l2 = ab.squaredNorm();
+      const double s = l2 > 0 ? std::clamp((q - sim[i]).dot(ab) / l2, 0.0, 1.0) : 0.0;
+      const V c = sim[i] + s * ab;
+      const double d = (q - c).norm();
+      if (d < best) {
+        best = d;
+        // the inward normal of an anticlockwise surface: the tangent turned by +90 deg
+        const V n = l2 > 0 ? V(-ab.y(), ab.x()) / std::sqrt(l2) : V(0, 0);
+        sign = (q - c).dot(n) >= 0 ? 1.0 : -1.0;
+      }
+    }
+    out.push_back(sign * best);
+  }
+  return out;
+}
+
+namespace {
+
+/// The forecast of a parameter set with snapshots at the measured hours and
+/// no end-of-life criteria: the residuals of every measured point.
+struct Fit {
+  const CalibrationProblem& p;
+  int forecasts = 0;
+
+  ForecastSpec fit_spec() const {
+    ForecastSpec s = p.spec;
+    s.method = ForecastMethod::Ode;
+    s.min_lifter_height_m = -1;            // criteria off: the fit follows the measured history
+    s.min_plate_thickness_m = 1e-6;
+    s.max_face_angle_leading_deg = 1e9;
+    s.extra_output_hours.clear();
+    for (const auto& m : p.measured.snapshots) s.extra_output_hours.push_back(m.hours);
+    s.max_operating_hours = p.measured.snapshots.back().hours * 1.0001 + 1e-3;
+    s.output_interval_h = 1e9;
+    return s;
+  }
+
+  /// Residuals [m], and the RMS of each snapshot.
+  Eigen::VectorXd residuals(const std::vector<double>& params, std::vector<double>* per_snapshot = nullptr) {
+    auto provider = p.make_provider(params);
+    const ForecastResult f = run_forecast(p.input, *provider, fit_spec());
+    ++forecasts;
+    std::vector<double> all;
+    if (per_snapshot) per_snapshot->clear();
+    const double R = p.input.initial->shell_radius_m;
+    for (const auto& m : p.measured.snapshots) {
+      // the profile recorded at these hours (or the last one if the liner wore
+      // through first: a large residual the fit moves away from)
+      const ProfileRecord* rec = &f.profiles.back();
+      for (const auto& pr : f.profiles)
+        if (std::abs(pr.hours - m.hours) <= 1e-6 * std::max(1.0, m.hours)) rec = &pr;
+      const auto r = profile_residuals(unrolled_to_mill(m.points, R, p.segments), rec->nodes);
+      double ss = 0;
+      for (double x : r) ss += x * x;
+      if (per_snapshot) per_snapshot->push_back(std::sqrt(ss / r.size()));
+      all.insert(all.end(), r.begin(), r.end());
+    }
+    return Eigen::Map<Eigen::VectorXd>(all.data(), static_cast<Eigen::Index>(all.size()));
+  }
+};
+
+std::vector<double> exp_of(const Eigen::VectorXd& theta) {
+  std::vector<double> v(static_cast<size_t>(theta.size()));
+  for (Eigen::Index i = 0; i < theta.size(); ++i) v[static_cast<size_t>(i)] = std::exp(theta(i));
+  return v;
+}
+
+}  // namespace
+
+CalibrationResult calibrate(const CalibrationProblem& p) {
+  const int np = static_cast<int>(p.initial.size());
+  if (np == 0) throw std::invalid_argument("calibrate: no parameters");
+  for (double v : p.initial)
+    if (!(v > 0)) throw std::invalid_argument("calibrate: parameters must start > 0");
+  Fit fit{p};
+  CalibrationResult res;
+  Eigen::VectorXd theta(np);
+  for (int i = 0; i < np; ++i) theta(i) = std::log(p.initial[static_cast<size_t>(i)]);
+  Eigen::VectorXd r = fit.residuals(exp_of(theta));
+  const Eigen::Index m = r.size();
+  if (m <= np)
+    throw InputError(p.measured.source, fmt::format("{}: {} measured points cannot fit {} parameters",
+                                                    p.measured.source, m, np));
+  double rss = r.squaredNorm();
+  res.rms_initial_m = std::sqrt(rss / m);
+  double lambda = 1e-3;
+  const double h = 0.02;  // finite-difference step in ln(parameter): 2 %
+  Eigen::MatrixXd J(m, np);
+  for (int it = 0; it < p.max_iterations; ++it) {
+    res.iterations = it + 1;
+    for (int j = 0; j < np; ++j) {
+      Eigen::VectorXd t2 = theta;
+      t2(j) += h;
+      J.col(j) = (fit.residuals(exp_of(t2)) - r) / h;
+    }
+    const Eigen::MatrixXd A = J.transpose() * J;
+    const Eigen::VectorXd g = J.transpose() * r;
+    bool improved = false;
+    Eigen::VectorXd step;
+    for (int tries = 0; tries < 8 && !improved; ++tries) {
+      Eigen::MatrixXd Ad = A;
+      for (int j = 0; j < np; ++j) Ad(j, j) += lambda * std::max(A(j, j), 1e-30);
+      step = Ad.ldlt().solve(-g);
+      // keep a step within a factor e of the parameters
+      const double big = step.cwiseAbs().maxCoeff();
+      if (big > 1.0) step /= big;
+      const Eigen::VectorXd r2 = fit.residuals(exp_of(theta + step));
+      const double rss2 = r2.squaredNorm();
+      if (rss2 < rss) {
+        theta += step;
+        r = r2;
+        const double rel = (rss - rss2) / std::max(rss, 1e-300);
+        rss = rss2;
+        lambda = std::max(lambda / 3, 1e-9);
+        improved = true;
+        if (step.cwiseAbs().maxCoeff() < 1e-4 || rel < 1e-8) res.converged = true;
+      } else {
+        lambda *= 4;
+      }
+    }
+    if (!improved) res.converged = true;  // no step lowers the misfit: at the minimum (to the FD resolution)
+    if (res.converged) break;
+  }
+  // covariance of ln(parameters) at the optimum: s^2 (J^T J)^-1, with J re-evaluated there
+  for (int j = 0; j < np; ++j) {
+    Eigen::VectorXd t2 = theta;
+    t2(j) += h;
+    J.col(j) = (fit.residuals(exp_of(t2)) - r) / h;
+  }
+  const double s2 = rss / static_cast<double>(m - np);
+  res.covariance_log = s2 * (J.transpose() * J).inverse();
+  res.params = exp_of(theta);
+  for (int j = 0; j < np; ++j) res.sigma_log.push_back(std::sqrt(std::max(0.0, res.covariance_log(j, j))));
+  fit.residuals(res.params, &res.rms_per_snapshot_m);
+  res.rms_m = std::sqrt(rss / m);
+  res.forecasts = fit.forecasts;
+  return res;
+}
+
+std::vector<ProfileRecord> fitted_profiles(const CalibrationProblem& p, const std::vector<double>& params) {
+  Fit fit{p};
+  auto provider = p.make_provider(params);
+  const ForecastResult f = run_forecast(p.input, *provider, fit.fit_spec());
+  std::vector<ProfileRecord> out;
+  for (const auto& m : p.measured.snapshots) {
+    const ProfileRecord* rec = &f.profiles.back();
+    for (const auto& pr : f.profiles)
+      if (std::abs(pr.hours - m.hours) <= 1e-6 * std::max(1.0, m.hours)) rec = &pr;
+    out.push_back(*rec);
+  }
+  return out;
+}
+
+LifeQuantiles life_quantiles(const std::vector<double>& params, const Eigen::MatrixXd& cov,
+                             const ProviderFactory& make_provider, const ForecastInput& input, const ForecastSpec& spec) {
+  LifeQuantiles q;
+  auto life = [&](const std::vector<double>& pr, std::string* criterion) {
+    auto provider = make_provider(pr);
+    const ForecastResult f = run_forecast(input, *provider, spec);
+    ++q.forecasts;
+    if (criterion) *criterion = f.criterion;
+    return f.operating_hours;
+  };
+  const double t50 = life(params, &q.criterion);
+  const int np = static_cast<int>(params.size());
+  Eigen::VectorXd g(np);
+  const double h = 0.02;
+  for (int j = 0; j < np; ++j) {
+    std::vector<double> p2 = params;
+    p2[static_cast<size_t>(j)] *= std::exp(h);
+    g(j) = (std::log(life(p2, nullptr)) - std::log(t50)) / h;
+  }
+  q.sigma_ln = std::sqrt(std::max(0.0, (g.transpose() * cov * g)(0, 0)));
+  const double z = 1.2815515655446004;  // the 90 % quantile of the standard normal
+  q.p50_h = t50;
+  q.p10_h = t50 * std::exp(-z * q.sigma_ln);
+  q.p90_h = t50 * std::exp(z * q.sigma_ln);
+  return q;
+}
+
+}  // namespace linerlife

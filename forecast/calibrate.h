@@ -1,0 +1,71 @@
+// calibrate.h - fits wear coefficients to lifter profiles measured at stated
+// operating hours, by least squares on the distance of the measured points to
+// the forecast profiles (Levenberg-Marquardt on ln(parameter), Eigen), with
+// the parameter covariance and the spread it gives the remaining life
+// (docs/models/forecast.md, "Calibration").
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "forecast/forecast.h"
+#include "forecast/measured_history.h"
+
+namespace linerlife {
+
+/// Makes the rate provider for a parameter vector (each parameter > 0, e.g.
+/// the Archard K or a Table B.1 calibration factor).
+using ProviderFactory = std::function<std::unique_ptr<RateProvider>(const std::vector<double>& params)>;
+
+struct CalibrationProblem {
+  std::vector<std::string> names;  // parameter names, for reports
+  std::vector<double> initial;     // initial values, > 0
+  ProviderFactory make_provider;
+  ForecastInput input;             // the liner as new, when the hours started
+  ForecastSpec spec;               // forecast settings; the fit runs the ode method without end-of-life criteria
+  MeasuredHistory measured;        // profiles at hours since new, in the unrolled frame of segment 0
+  int segments = 0;                // lifter rows (for the unrolled -> mill mapping)
+  int max_iterations = 12;
+};
+
+struct CalibrationResult {
+  std::vector<double> params;         // fitted values
+  std::vector<double> sigma_log;      // 1-sigma of ln(parameter)
+  Eigen::MatrixXd covariance_log;     // of ln(parameters)
+  double rms_m = 0;                   // [m] RMS distance of the measured points to the fitted profiles
+  double rms_initial_m = 0;           // [m] with the initial parameters
+  std::vector<double> rms_per_snapshot_m;
+  int forecasts = 0;
+  int iterations = 0;
+  bool converged = false;
+};
+
+CalibrationResult calibrate(const CalibrationProblem& p);
+
+/// The forecast profiles of segment 0 at the measured hours for `params`
+/// (mill frame), as the fit compares them.
+std::vector<ProfileRecord> fitted_profiles(const CalibrationProblem& p, const std::vector<double>& params);
+
+/// Signed distances [m] of measured points (mill frame) to a simulated
+/// profile chain: positive where the measured surface stands on the charge
+/// side of the simulated one (less worn than simulated).
+std::vector<double> profile_residuals(const std::vector<Eigen::Vector2d>& measured,
+                                      const std::vector<Eigen::Vector2d>& simulated);
+
+/// The spread of a life from the parameter uncertainty: ln T is linearised in
+/// ln(parameters) by finite differences (one forecast per parameter) and
+/// taken as normal. P10 is the short life (the early relining date).
+struct LifeQuantiles {
+  double p10_h = 0, p50_h = 0, p90_h = 0;  // [h] operating hours
+  double sigma_ln = 0;                      // of ln T
+  std::string criterion;                    // of the P50 forecast
+  int forecasts = 0;
+};
+LifeQuantiles life_quantiles(const std::vector<double>& params, const Eigen::MatrixXd& covariance_log,
+                             const ProviderFactory& make_provider, const ForecastInput& input, const ForecastSpec& spec);
+
+}  // namespace linerlife

@@ -1,0 +1,777 @@
+#include "forecast/forecast.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <stdexcept>
+
+#include <cvode/cvode.h>
+#include <fmt/format.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include "geometry/build_liner_surface.h"
+#include "geometry/errors.h"
+#include "geometry/metrics.h"
+#include "geometry/remesh.h"
+
+namespace linerlife {
+
+const char* method_name(ForecastMethod m) {
+  switch (m) {
+    case ForecastMethod::Ode: return "ode";
+    case ForecastMethod::Amplify: return "amplify";
+    case ForecastMethod::Euler: return "euler";
+  }
+  return "?";
+}
+
+int pattern_period(const LinerSurface& s) {
+  for (int p = 1; p <= s.segments; ++p) {
+    if (s.segments % p != 0) continue;
+    bool ok = true;
+    for (int k = 0; k < s.segments && ok; ++k)
+      ok = s.segment_design[static_cast<size_t>(k)] == s.segment_design[static_cast<size_t>(k % p)] &&
+           s.segment_size(k) == s.segment_size(k % p);
+    if (ok) return p;
+  }
+  return s.segments;
+}
+
+std::vector<double> smooth_along_surface(const LinerSurface& s, std::vector<double> v, int passes) {
+  // Flux form: v_i += (F_{i+1/2} - F_{i-1/2}) / L_i with F_{i+1/2} =
+  // min(L_i, L_{i+1}) (v_{i+1} - v_i) / 4. The fluxes telescope, so
+  // sum(L v) is kept exactly; a uniform field is kept whatever the element
+  // lengths; the weights (<= 1/4 each side) are non-negative, so no new extrema.
+  const int n = s.n_elements();
+  std::vector<double> flux(static_cast<size_t>(n));
+  for (int p = 0; p < passes; ++p) {
+    for (int i = 0; i < n; ++i) {
+      const int j = s.next(i);
+      flux[i] = 0.25 * std::min(s.length[i], s.length[j]) * (v[j] - v[i]);
+    }
+    for (int i = 0; i < n; ++i)
+      if (s.length[i] > 0) v[i] += (flux[i] - flux[s.prev(i)]) / s.length[i];
+  }
+  return v;
+}
+
+namespace {
+
+using V = Eigen::Vector2d;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// The representative cell of the ring: segments 0 .. p-1, repeated by rotation.
+class Cell {
+ public:
+  Cell(const LinerSurface& ring, int period) : base_(ring), p_(period) {
+    n_cell_ = ring.segment_begin[static_cast<size_t>(p_)];
+    copies_ = ring.segments / p_;
+    if (copies_ * n_cell_ != ring.n_nodes())
+      throw std::invalid_argument("forecast: the ring is not a repetition of its first segments");
+  }
+  const LinerSurface& base() const { return base_; }
+  int size() const { return n_cell_; }
+  int period() const { return p_; }
+
+  std::vector<double> ring_depth(const double* y) const {
+    std::vector<double> d(static_cast<size_t>(base_.n_nodes()));
+    for (int c = 0; c < copies_; ++c)
+      for (int i = 0; i < n_cell_; ++i) d[static_cast<size_t>(c * n_cell_ + i)] = y[i];
+    return d;
+  }
+  LinerSurface displaced(const double* y) const { return displace_nodes(base_, ring_depth(y)); }
+
+  /// Element rates of the ring -> smoothed -> node rates -> mean over the copies of the cell.
+  std::vector<double> cell_rates(const LinerSurface& ring, const std::vector<double>& element_rate, int passes) const {
+    const std::vector<double> r = smooth_along_surface(ring, element_rate, passes);
+    std::vector<double> out(static_cast<size_t>(n_cell_), 0.0);
+    for (int c = 0; c < copies_; ++c)
+      for (int i = 0; i < n_cell_; ++i) {
+        const int g = c * n_cell_ + i, a = ring.prev(g);
+        const double w = ring.length[a] + ring.length[g];
+        out[i] += w > 0 ? (ring.length[a] * r[a] + ring.length[g] * r[g]) / w : 0.5 * (r[a] + r[g]);
+      }
+    for (double& x : out) x = std::max(0.0, x / copies_);
+    return out;
+  }
+
+  /// Carries cell-node fields across a remesh: each node of the new cell takes
+  /// the value at its closest point on `old_ring` (the old surface as it was
+  /// displaced when remeshed), interpolated along that element. The remesh
+  /// leaves the new nodes on the old surface (up to removed loops), so this is
+  /// an interpolation, not an extrapolation.
+  std::vector<double> transfer(const LinerSurface& old_ring, int old_cell, const std::vector<double>& f_old) const {
+    std::vector<double> out(static_cast<size_t>(n_cell_));
+    const int n_old = old_ring.n_nodes();
+    // old elements of the cell and one on each side
+    const int lo = -1, hi = old_ring.segment_begin[static_cast<size_t>(p_)] + 1;
+    for (int i = 0; i < n_cell_; ++i) {
+      const V& q = base_.nodes[i];
+      double best = 1e300, val = 0;
+      for (int e = lo; e < hi; ++e) {
+        const int a = ((e % n_old) + n_old) % n_old, b = (a + 1) % n_old;
+        const V ab = old_ring.nodes[b] - old_ring.nodes[a];
+        const double l2 = ab.squaredNorm();
+        const double s = l2 > 0 ? std::clamp((q - old_ring.nodes[a]).dot(ab) / l2, 0.0, 1.0) : 0.0;
+        const double d2 = (old_ring.nodes[a] + s * ab - q).squaredNorm();
+        if (d2 < best) {
+          best = d2;
+          val = (1 - s) * f_old[static_cast<size_t>(a % old_cell)] + s * f_old[static_cast<size_t>(b % old_cell)];
+        }
+      }
+      out[static_cast<size_t>(i)] = val;
+    }
+    return out;
+  }
+
+  /// Applies the depths y with the CGAL remesh of the cell's segments and
+  /// rebuilds the ring; returns the status of the cell.
+  SegmentRemesh remesh(const double* y, const RemeshOptions& opt) {
+    const std::vector<double> d = ring_depth(y);
+    SegmentRemesh status;
+    std::vector<std::vector<V>> profiles;
+    for (int k = 0; k < p_; ++k) {
+      SegmentRemesh r = remesh_segment(base_, d, k, opt);
+      if (r.status != RemeshStatus::Ok && status.status == RemeshStatus::Ok) status = r;
+      profiles.push_back(rotate_points(r.nodes, -base_.segment_centre_rad(k)));
+    }
+    std::vector<int> design(static_cast<size_t>(base_.segments));
+    for (int k = 0; k < base_.segments; ++k) design[static_cast<size_t>(k)] = k % p_;
+    base_ = assemble_ring(base_.shell_radius_m, base_.segments, profiles, design);
+    n_cell_ = base_.segment_begin[static_cast<size_t>(p_)];
+    return status;
+  }
+
+ private:
+  LinerSurface base_;
+  int p_ = 1, n_cell_ = 0, copies_ = 1;
+};
+
+/// What the criteria look at.
+struct Gauge {
+  SegmentMetrics lifter;      // segment 0
+  double min_thickness = 0;   // [m] over the cell
+  double mass_kg_per_m = 0;   // [kg/m] ring
+};
+
+Gauge gauge(const LinerSurface& ring, int period, Rotation rot, double density) {
+  Gauge g;
+  g.lifter = segment_metrics(ring, 0, rot, density);
+  g.min_thickness = g.lifter.min_thickness_m;
+  double cell_mass = g.lifter.mass_kg_per_m;
+  for (int k = 1; k < period; ++k) {
+    const SegmentMetrics m = segment_metrics(ring, k, rot, density);
+    g.min_thickness = std::min(g.min_thickness, m.min_thickness_m);
+    cell_mass += m.mass_kg_per_m;
+  }
+  g.mass_kg_per_m = cell_mass * ring.segments / period;
+  return g;
+}
+
+constexpr double kWornThroughM = 2e-4;  // [m] the remesh holds nodes 1e-4 m off the shell
+
+/// Criterion functions, positive while the liner is serviceable.
+struct Criteria {
+  const ForecastSpec* spec;
+  bool lifter = true;  // the liner starts with a lifter: the height and face criteria apply
+  double g_height(const Gauge& g) const {
+    return lifter ? g.lifter.lifter_height_m - spec->min_lifter_height_m : spec->min_lifter_height_m + 1.0;
+  }
+  double g_plate(const Gauge& g) const { return g.min_thickness - spec->min_plate_thickness_m; }
+  double g_face(const Gauge& g) const {
+    const double a = g.lifter.face_angle_leading_deg;
+    return !lifter || std::isnan(a) ? spec->max_face_angle_leading_deg : spec->max_face_angle_leading_deg - a;
+  }
+  double g_worn(const Gauge& g) const { return g.min_thickness - kWornThroughM; }
+  static const char* name(int i) {
+    static const char* names[] = {"min_lifter_height", "min_plate_thickness", "max_face_angle_leading",
+                                  "worn_through"};
+    return names[i];
+  }
+  void eval(const Gauge& g, double* out) const {
+    out[0] = g_height(g);
+    out[1] = g_plate(g);
+    out[2] = g_face(g);
+    out[3] = g_worn(g);
+  }
+  /// Fraction of the life used, for progress display: the largest of the criteria's.
+  double progress(const Gauge& g0, const Gauge& g) const {
+    double f = 0;
+    double a[4], b[4];
+    eval(g0, a);
+    eval(g, b);
+    for (int i = 0; i < 4; ++i)
+      if (a[i] > 0) f = std::max(f, 1.0 - b[i] / a[i]);
+    return std::clamp(f, 0.0, 1.0);
+  }
+};
+
+/// The forecast's moving parts, shared by the three methods.
+class Life {
+ public:
+  Life(const ForecastInput& in, RateProvider& rates, const ForecastSpec& spec, const ForecastHooks& hooks)
+      : in_(in), rates_(rates), spec_(spec), hooks_(hooks), progress_(hooks.progress),
+        cell_(*in.initial, pattern_period(*in.initial)), crit_{&spec} {
+    opt_.element_size_m = in.element_size_m;
+    remesh_depth_ = spec.remesh_depth_m > 0 ? spec.remesh_depth_m : 0.5 * in.element_size_m;
+    y_.assign(static_cast<size_t>(cell_.size()), 0.0);
+    g0_ = gauge(*in.initial, cell_.period(), in.rotation, in.density_kg_m3);
+    crit_.lifter = g0_.lifter.has_lifter;  // a plain plate has no lifter to wear down
+    double g[4];
+    crit_.eval(g0_, g);
+    for (int i = 0; i < 4; ++i)
+      if (g[i] <= 0)
+        throw InputError(std::string("forecast.") + (i == 0   ? "min_lifter_height_m"
+                                                     : i == 1 ? "min_plate_thickness_m"
+                                                     : i == 2 ? "max_face_angle_leading_deg"
+                                                              : "min_plate_thickness_m"),
+                         fmt::format("the liner already meets the relining criterion {} at the start (lifter "
+                                     "height {:.4f} m, thinnest point {:.4f} m, leading face {:.2f} deg): nothing "
+                                     "to forecast; check the [forecast] criteria against the liner",
+                                     Criteria::name(i), g0_.lifter.lifter_height_m, g0_.min_thickness,
+                                     g0_.lifter.face_angle_leading_deg));
+  }
+
+  ForecastResult run() {
+    const auto t0 = std::chrono::steady_clock::now();
+    wall0_ = t0;
+    for (double h : spec_.extra_output_hours)
+      if (h > 0) extra_.push_back(h * 3600.0);
+    std::sort(extra_.begin(), extra_.end());
+    next_regular_ = spec_.output_interval_h * 3600.0;
+    next_explicit_out_ = next_regular_;
+    double wall_before = 0;
+    if (hooks_.resume) {
+      restore(*hooks_.resume);
+      wall_before = res_.stats.wall_s;
+    } else {
+      drive(spec_.revolutions_per_drive);
+      record(0.0);
+    }
+    try {
+      switch (spec_.method) {
+        case ForecastMethod::Ode: run_ode(); break;
+        case ForecastMethod::Euler: run_explicit(spec_.euler_step_h * 3600.0, spec_.revolutions_per_drive, false); break;
+        case ForecastMethod::Amplify: {
+          const double period_s = 60.0 / in_.speed_rpm;
+          run_explicit(spec_.amplify_revolutions * period_s * spec_.amplification, spec_.amplify_revolutions, true);
+          break;
+        }
+      }
+    } catch (const SimulationError&) {
+      if (hooks_.partial) {
+        res_.stats.wall_s = wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        res_.operating_hours = t_ / 3600.0;
+        res_.criterion = "failed";
+        res_.final_surface = cell_.displaced(y_.data());
+        *hooks_.partial = res_;
+      }
+      throw;
+    }
+    res_.stats.wall_s = wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    res_.calendar_days = spec_.calendar.calendar_days_for(res_.operating_hours);
+    res_.relining_date = spec_.calendar.date_after(res_.operating_hours);
+    res_.tonnes = res_.operating_hours * spec_.throughput_t_per_h;
+    res_.final_surface = cell_.displaced(y_.data());
+    return res_;
+  }
+
+  // --- the right-hand side of the ODE, called through CVODE ---
+  void rhs(const double* y, double* ydot) {
+    const std::vector<double>* r = &r_now_;
+    if (spec_.refresh_always) {
+      sample_at(y, spec_.revolutions_per_drive);
+      r = &r_now_;
+      for (int i = 0; i < cell_.size(); ++i) ydot[i] = (*r)[i];
+      return;
+    }
+    if (spec_.rate_model == "secant" && have_prev_) {
+      // linear in the path from the previous drive to the last one
+      double num = 0, den = 0;
+      for (int i = 0; i < cell_.size(); ++i) {
+        const double dy = y_drive_[i] - y_prev_[i];
+        num += (y[i] - y_drive_[i]) * dy;
+        den += dy * dy;
+      }
+      const double s = den > 0 ? std::clamp(num / den, 0.0, 3.0) : 0.0;
+      for (int i = 0; i < cell_.size(); ++i) ydot[i] = std::max(0.0, r_now_[i] + s * (r_now_[i] - r_prev_[i]));
+      return;
+    }
+    for (int i = 0; i < cell_.size(); ++i) ydot[i] = (*r)[i];
+  }
+
+  // --- the root functions: criteria, remesh and refresh ---
+  static constexpr int kRoots = 6;
+  void roots(const double* y, double* g) {
+    const Gauge gg = gauge(cell_.displaced(y), cell_.period(), in_.rotation, in_.density_kg_m3);
+    crit_.eval(gg, g);
+    double ymax = 0, moved = 0;
+    for (int i = 0; i < cell_.size(); ++i) {
+      ymax = std::max(ymax, y[i]);
+      moved = std::max(moved, std::abs(y[i] - y_drive_[i]));
+    }
+    g[4] = remesh_depth_ - ymax;
+    g[5] = spec_.refresh_always ? 1.0 : spec_.refresh_tol_m - moved;
+  }
+
+  std::exception_ptr error;  // set by a callback that failed
+
+ private:
+  double moved_since_drive() const {
+    double moved = 0;
+    for (int i = 0; i < cell_.size(); ++i) moved = std::max(moved, std::abs(y_[i] - y_drive_[i]));
+    return moved;
+  }
+
+  /// A charge drive at the current state: new rates, shifted history.
+  void drive(double revolutions) {
+    r_prev_ = r_now_;
+    y_prev_ = y_drive_;
+    have_prev_ = !r_prev_.empty();
+    sample_at(y_.data(), revolutions);
+    y_drive_ = y_;
+  }
+
+  void sample_at(const double* y, double revolutions) {
+    const LinerSurface ring = cell_.displaced(y);
+    last_ = rates_.sample(ring, revolutions);
+    if (static_cast<int>(last_.element_rate_m_s.size()) != ring.n_elements())
+      throw std::logic_error("rate provider: one rate per element expected");
+    for (double r : last_.element_rate_m_s)
+      if (!std::isfinite(r) || r < 0)
+        throw SimulationError(fmt::format("the charge/wear model returned a recession rate of {} m/s at {:.0f} "
+                                          "operating hours; rates must be finite and >= 0",
+                                          r, t_ / 3600.0));
+    r_now_ = cell_.cell_rates(ring, last_.element_rate_m_s, spec_.rate_smoothing_passes);
+    ++res_.stats.charge_redrives;
+    res_.stats.charge_wall_s += last_.wall_s;
+    res_.stats.charge_simulated_s += last_.simulated_s;
+  }
+
+  Gauge gauge_now() const { return gauge(cell_.displaced(y_.data()), cell_.period(), in_.rotation, in_.density_kg_m3); }
+
+  void record(double t_s) {
+    const Gauge g = gauge_now();
+    LifeRecord r;
+    r.hours = t_s / 3600.0;
+    r.lifter_height_m = g.lifter.lifter_height_m;
+    r.face_angle_leading_deg = g.lifter.face_angle_leading_deg;
+    r.face_angle_trailing_deg = g.lifter.face_angle_trailing_deg;
+    r.top_width_m = g.lifter.top_width_m;
+    r.min_thickness_m = g.min_thickness;
+    r.liner_mass_kg_per_m = g.mass_kg_per_m;
+    const Indicators& ind = last_.indicators;
+    r.net_power_kw = last_.has_indicators ? ind.net_power_kw : kNaN;
+    r.toe_deg = last_.has_indicators ? ind.toe_deg : kNaN;
+    r.shoulder_deg = last_.has_indicators ? ind.shoulder_deg : kNaN;
+    r.direct_impact_fraction = last_.has_indicators ? ind.direct_impact_fraction : kNaN;
+    r.impact_fraction = last_.impact_fraction;
+    res_.history.push_back(r);
+    const LinerSurface ring = cell_.displaced(y_.data());
+    ProfileRecord p;
+    p.hours = r.hours;
+    for (int i = ring.segment_begin[0]; i <= ring.segment_begin[1]; ++i) p.nodes.push_back(ring.nodes[i % ring.n_nodes()]);
+    res_.profiles.push_back(std::move(p));
+    if (progress_) progress_(r.hours, crit_.progress(g0_, g));
+  }
+
+  /// Remeshes at the current depths and carries the drive history onto the
+  /// new nodes, so the rate model continues across the remesh without a new
+  /// charge drive: the rates by closest point, the drive states as depths
+  /// relative to the new profile (y_drive - y, <= 0: the profile at the drive
+  /// lay that far outside the current one).
+  void do_remesh() {
+    const LinerSurface old_ring = cell_.displaced(y_.data());
+    const int old_cell = cell_.size();
+    std::vector<double> rel_drive(y_drive_), rel_prev(y_prev_);
+    for (int i = 0; i < old_cell; ++i) {
+      rel_drive[i] -= y_[i];
+      if (!rel_prev.empty()) rel_prev[i] -= y_[i];
+    }
+    const SegmentRemesh st = cell_.remesh(y_.data(), opt_);
+    (void)st;  // worn-through is a criterion (root), caught before a remesh reaches the shell
+    r_now_ = cell_.transfer(old_ring, old_cell, r_now_);
+    y_drive_ = cell_.transfer(old_ring, old_cell, rel_drive);
+    if (have_prev_) {
+      r_prev_ = cell_.transfer(old_ring, old_cell, r_prev_);
+      y_prev_ = cell_.transfer(old_ring, old_cell, rel_prev);
+    }
+    y_.assign(static_cast<size_t>(cell_.size()), 0.0);
+    ++res_.stats.remeshes;
+  }
+
+  void finish(double t_s, const std::string& criterion, bool reached) {
+    t_ = t_s;
+    res_.reached = reached;
+    res_.criterion = criterion;
+    res_.operating_hours = t_s / 3600.0;
+    record(t_s);
+  }
+
+  // --- output times: every output_interval_h, and exactly at the extra times ---
+  double next_output() const {
+    return next_extra_ < extra_.size() ? std::min(next_regular_, extra_[next_extra_]) : next_regular_;
+  }
+  void advance_output() {  // past every output time already reached
+    while (next_extra_ < extra_.size() && extra_[next_extra_] <= t_ * (1 + 1e-12)) ++next_extra_;
+    while (next_regular_ <= t_ * (1 + 1e-12)) next_regular_ += spec_.output_interval_h * 3600.0;
+  }
+
+  // --- checkpoints: right after a drive or remesh, where the integrator restarts ---
+  void maybe_checkpoint() {
+    if (!hooks_.checkpoint) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - last_checkpoint_).count() < hooks_.checkpoint_interval_s) return;
+    last_checkpoint_ = now;
+    ForecastCheckpoint c;
+    c.method = method_name(spec_.method);
+    c.t_s = t_;
+    c.y = y_;
+    c.y_drive = y_drive_;
+    c.y_prev = y_prev_;
+    c.r_now = r_now_;
+    c.r_prev = r_prev_;
+    c.have_prev = have_prev_;
+    c.next_regular_s = next_regular_;
+    c.next_extra = static_cast<long long>(next_extra_);
+    c.next_explicit_out_s = next_explicit_out_;
+    c.base = cell_.base();
+    c.has_indicators = last_.has_indicators;
+    c.net_power_kw = last_.indicators.net_power_kw;
+    c.toe_deg = last_.indicators.toe_deg;
+    c.shoulder_deg = last_.indicators.shoulder_deg;
+    c.direct_impact_fraction = last_.indicators.direct_impact_fraction;
+    c.impact_fraction = last_.impact_fraction;
+    c.provider_drives = rates_.drive_count();
+    c.history = res_.history;
+    c.profiles = res_.profiles;
+    c.stats = res_.stats;
+    c.stats.wall_s += std::chrono::duration<double>(now - wall0_).count();
+    hooks_.checkpoint(c);
+  }
+
+  void restore(const ForecastCheckpoint& c) {
+    if (c.method != method_name(spec_.method))
+      throw InputError("--resume", fmt::format("the checkpoint is of a {} forecast, this run asks for {}", c.method,
+                                               method_name(spec_.method)));
+    cell_ = Cell(c.base, cell_.period());
+    if (static_cast<int>(c.y.size()) != cell_.size())
+      throw InputError("--resume", "the checkpoint's state does not match its liner (a damaged checkpoint?)");
+    t_ = c.t_s;
+    y_ = c.y;
+    y_drive_ = c.y_drive;
+    y_prev_ = c.y_prev;
+    r_now_ = c.r_now;
+    r_prev_ = c.r_prev;
+    have_prev_ = c.have_prev;
+    next_regular_ = c.next_regular_s;
+    next_extra_ = static_cast<size_t>(c.next_extra);
+    next_explicit_out_ = c.next_explicit_out_s;
+    last_ = RateSample{};
+    last_.has_indicators = c.has_indicators;
+    last_.indicators.net_power_kw = c.net_power_kw;
+    last_.indicators.toe_deg = c.toe_deg;
+    last_.indicators.shoulder_deg = c.shoulder_deg;
+    last_.indicators.direct_impact_fraction = c.direct_impact_fraction;
+    last_.impact_fraction = c.impact_fraction;
+    rates_.set_drive_count(c.provider_drives);
+    res_.history = c.history;
+    res_.profiles = c.profiles;
+    res_.stats = c.stats;
+  }
+
+  void run_ode();
+  void run_explicit(double dt_s, double revolutions, bool remesh_every_step);
+
+  const ForecastInput& in_;
+  RateProvider& rates_;
+  const ForecastSpec& spec_;
+  const ForecastHooks& hooks_;
+  ProgressFn progress_;
+  std::vector<double> extra_;  // [s] extra output times, sorted
+  size_t next_extra_ = 0;
+  double next_regular_ = 0, next_explicit_out_ = 0;
+  std::chrono::steady_clock::time_point wall0_, last_checkpoint_{};
+  Cell cell_;
+  Criteria crit_;
+  RemeshOptions opt_;
+  double remesh_depth_ = 0;
+  double t_ = 0;
+  Gauge g0_;
+  std::vector<double> y_, y_drive_, y_prev_, r_now_, r_prev_;
+  bool have_prev_ = false;
+  RateSample last_;
+  ForecastResult res_;
+};
+
+// ---------------------------------------------------------------------------
+// CVODE plumbing: every SUNDIALS return code goes through check(); callbacks
+// never throw through C (they stash the exception and return -1).
+
+thread_local std::string g_cvode_message;  // the last message of CVODE's error handler
+
+void cvode_error_handler(int, const char* module, const char* function, char* msg, void*) {
+  g_cvode_message = fmt::format("{} {}: {}", module ? module : "", function ? function : "", msg ? msg : "");
+}
+
+void check(int flag, const char* call, double t_s) {
+  if (flag >= 0) return;
+  const char* name = CVodeGetReturnFlagName(flag);
+  std::string hint;
+  switch (flag) {
+    case CV_TOO_MUCH_WORK:
+      hint = "the wear-rate field changes too fast for the step budget: raise rtol or refresh_tol_m, or average more "
+             "revolutions per drive so the rates are less noisy";
+      break;
+    case CV_ERR_FAILURE:
+    case CV_CONV_FAILURE:
+      hint = "repeated error-test or convergence failures: the rate field is probably noisy or discontinuous; average "
+             "more revolutions per drive, raise rate_smoothing_passes, or use rate_model = \"frozen\"";
+      break;
+    case CV_RHSFUNC_FAIL:
+    case CV_RTFUNC_FAIL:
+      hint = "the charge/wear model failed inside the integration (see above)";
+      break;
+    default:
+      hint = "an integrator error";
+  }
+  std::string detail = g_cvode_message.empty() ? "" : " (" + g_cvode_message + ")";
+  g_cvode_message.clear();
+  throw SimulationError(fmt::format("CVODE {} failed with {} at {:.1f} operating hours{}: {}", call,
+                                    name ? name : "?", t_s / 3600.0, detail, hint));
+}
+
+template <class T>
+T* check_ptr(T* p, const char* what) {
+  if (!p) throw std::runtime_error(fmt::format("SUNDIALS could not create {}", what));
+  return p;
+}
+
+struct Sundials {
+  SUNContext ctx = nullptr;
+  void* mem = nullptr;
+  N_Vector y = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+  SUNNonlinearSolver NLS = nullptr;
+  Sundials() { check(SUNContext_Create(nullptr, &ctx), "SUNContext_Create", 0); }
+  void release() {
+    if (mem) CVodeFree(&mem);
+    if (NLS) SUNNonlinSolFree(NLS);
+    if (LS) SUNLinSolFree(LS);
+    if (A) SUNMatDestroy(A);
+    if (y) N_VDestroy(y);
+    mem = nullptr;
+    NLS = nullptr;
+    LS = nullptr;
+    A = nullptr;
+    y = nullptr;
+  }
+  ~Sundials() {
+    release();
+    if (ctx) SUNContext_Free(&ctx);
+  }
+};
+
+int rhs_callback(realtype, N_Vector y, N_Vector ydot, void* user) {
+  Life* life = static_cast<Life*>(user);
+  try {
+    life->rhs(N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+    return 0;
+  } catch (...) {
+    life->error = std::current_exception();
+    return -1;
+  }
+}
+
+int root_callback(realtype, N_Vector y, realtype* g, void* user) {
+  Life* life = static_cast<Life*>(user);
+  try {
+    life->roots(N_VGetArrayPointer(y), g);
+    return 0;
+  } catch (...) {
+    life->error = std::current_exception();
+    return -1;
+  }
+}
+
+void Life::run_ode() {
+  Sundials s;
+  const double horizon = spec_.max_operating_hours * 3600.0;
+  ForecastStats& st = res_.stats;
+  // CVODE's counters restart at every CVodeInit and CVodeReInit: add them up first
+  auto collect = [&] {
+    if (!s.mem) return;
+    long int v = 0;
+    check(CVodeGetNumSteps(s.mem, &v), "CVodeGetNumSteps", t_);
+    st.cvode_steps += v;
+    check(CVodeGetNumRhsEvals(s.mem, &v), "CVodeGetNumRhsEvals", t_);
+    st.rhs_evals += v;
+    check(CVodeGetNumErrTestFails(s.mem, &v), "CVodeGetNumErrTestFails", t_);
+    st.error_test_failures += v;
+    check(CVodeGetNumNonlinSolvConvFails(s.mem, &v), "CVodeGetNumNonlinSolvConvFails", t_);
+    st.nonlinear_failures += v;
+  };
+  // (Re)creates the integrator for the current state size: after a remesh the
+  // node count changes, so a CVodeReInit is not enough.
+  auto start = [&] {
+    collect();
+    s.release();
+    const sunindextype n = cell_.size();
+    s.y = check_ptr(N_VNew_Serial(n, s.ctx), "an N_Vector");
+    std::copy(y_.begin(), y_.end(), N_VGetArrayPointer(s.y));
+    const bool bdf = spec_.integrator == "bdf";
+    s.mem = check_ptr(CVodeCreate(bdf ? CV_BDF : CV_ADAMS, s.ctx), "CVODE");
+    check(CVodeSetErrHandlerFn(s.mem, cvode_error_handler, nullptr), "CVodeSetErrHandlerFn", t_);
+    check(CVodeInit(s.mem, rhs_callback, t_, s.y), "CVodeInit", t_);
+    check(CVodeSetUserData(s.mem, this), "CVodeSetUserData", t_);
+    check(CVodeSStolerances(s.mem, spec_.rtol, spec_.atol), "CVodeSStolerances", t_);
+    check(CVodeSetMaxNumSteps(s.mem, 20000), "CVodeSetMaxNumSteps", t_);
+    if (bdf) {
+      s.A = check_ptr(SUNDenseMatrix(n, n, s.ctx), "a dense matrix");
+      s.LS = check_ptr(SUNLinSol_Dense(s.y, s.A, s.ctx), "a dense linear solver");
+      check(CVodeSetLinearSolver(s.mem, s.LS, s.A), "CVodeSetLinearSolver", t_);
+    } else {
+      s.NLS = check_ptr(SUNNonlinSol_FixedPoint(s.y, 0, s.ctx), "a fixed-point solver");
+      check(CVodeSetNonlinearSolver(s.mem, s.NLS), "CVodeSetNonlinearSolver", t_);
+    }
+    check(CVodeRootInit(s.mem, kRoots, root_callback), "CVodeRootInit", t_);
+    int dir[kRoots] = {-1, -1, -1, -1, -1, -1};
+    check(CVodeSetRootDirection(s.mem, dir), "CVodeSetRootDirection", t_);
+  };
+  auto reinit = [&] {
+    collect();
+    std::copy(y_.begin(), y_.end(), N_VGetArrayPointer(s.y));
+    check(CVodeReInit(s.mem, t_, s.y), "CVodeReInit", t_);
+  };
+  auto stop = [&](double t_end, const std::string& criterion, bool reached) {
+    collect();
+    s.release();
+    finish(t_end, criterion, reached);
+  };
+
+  start();
+  while (true) {
+    const double next_out = next_output();
+    // an event can land on an output time: record it before asking CVODE for
+    // an interval it would call too short
+    if (t_ >= next_out * (1 - 1e-12) && next_out < horizon) {
+      record(t_);
+      advance_output();
+      continue;
+    }
+    const double tout = std::min(next_out, horizon);
+    realtype t = t_;
+    const int flag = CVode(s.mem, tout, s.y, &t, CV_NORMAL);
+    if (error) std::rethrow_exception(error);
+    check(flag, "CVode", t_);
+    t_ = t;
+    std::copy(N_VGetArrayPointer(s.y), N_VGetArrayPointer(s.y) + cell_.size(), y_.begin());
+    if (flag == CV_ROOT_RETURN) {
+      int found[kRoots] = {0};
+      check(CVodeGetRootInfo(s.mem, found), "CVodeGetRootInfo", t_);
+      int criterion = -1;
+      for (int i = 0; i < 4 && criterion < 0; ++i)
+        if (found[i]) criterion = i;
+      if (criterion >= 0) {
+        stop(t_, Criteria::name(criterion), true);
+        return;
+      }
+      // A remesh and a refresh can fall on the same step, and after a restart
+      // a refresh condition sitting exactly at zero is not seen as a crossing:
+      // decide the refresh from the state, not from the root flag alone.
+      const bool remeshed = found[4] != 0;
+      if (remeshed) do_remesh();
+      if (spec_.refresh_always ? remeshed : (found[5] || moved_since_drive() >= (1 - 1e-6) * spec_.refresh_tol_m))
+        drive(spec_.revolutions_per_drive);
+      if (remeshed)
+        start();
+      else
+        reinit();
+      maybe_checkpoint();
+      continue;
+    }
+    // an output time or the horizon
+    if (t_ >= horizon * (1 - 1e-12)) {
+      stop(horizon, "horizon", false);
+      return;
+    }
+    record(t_);
+    advance_output();
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Explicit methods: Euler with feedback, and the thesis' amplification.
+
+void Life::run_explicit(double dt_s, double revolutions, bool remesh_every_step) {
+  const double horizon = spec_.max_operating_hours * 3600.0;
+  if (spec_.method == ForecastMethod::Amplify && !hooks_.resume) {
+    // the first drive already happened with revolutions_per_drive; the thesis
+    // method drives over its own short window
+    drive(revolutions);
+  }
+  double g_old[4];
+  crit_.eval(gauge_now(), g_old);
+  while (t_ < horizon) {
+    std::vector<double> y_new(y_);
+    for (int i = 0; i < cell_.size(); ++i) y_new[i] += r_now_[i] * dt_s;
+    const Gauge gn = gauge(cell_.displaced(y_new.data()), cell_.period(), in_.rotation, in_.density_kg_m3);
+    double g_new[4];
+    crit_.eval(gn, g_new);
+    ++res_.stats.explicit_steps;
+    // the first criterion to cross, located by linear interpolation in the step
+    int first = -1;
+    double frac_first = 2;
+    for (int i = 0; i < 4; ++i)
+      if (g_new[i] <= 0) {
+        const double f = g_old[i] > g_new[i] ? g_old[i] / (g_old[i] - g_new[i]) : 1.0;
+        if (f < frac_first) {
+          frac_first = f;
+          first = i;
+        }
+      }
+    if (first >= 0) {
+      for (int i = 0; i < cell_.size(); ++i) y_[i] += frac_first * r_now_[i] * dt_s;
+      finish(t_ + frac_first * dt_s, Criteria::name(first), true);
+      return;
+    }
+    y_ = y_new;
+    t_ += dt_s;
+    std::copy(g_new, g_new + 4, g_old);
+    double ymax = 0;
+    for (double v : y_) ymax = std::max(ymax, v);
+    if (remesh_every_step || ymax > remesh_depth_) do_remesh();
+    while (t_ >= next_explicit_out_) {
+      record(t_);
+      next_explicit_out_ += spec_.output_interval_h * 3600.0;
+    }
+    drive(revolutions);
+    maybe_checkpoint();
+  }
+  finish(horizon, "horizon", false);
+}
+
+}  // namespace
+
+ForecastResult run_forecast(const ForecastInput& in, RateProvider& rates, const ForecastSpec& spec,
+                            const ForecastHooks& hooks) {
+  if (!in.initial) throw std::invalid_argument("run_forecast: no initial surface");
+  Life life(in, rates, spec, hooks);
+  return life.run();
+}
+
+ForecastResult run_forecast(const ForecastInput& in, RateProvider& rates, const ForecastSpec& spec,
+                            const ProgressFn& progress) {
+  ForecastHooks hooks;
+  hooks.progress = progress;
+  return run_forecast(in, rates, spec, hooks);
+}
+
+}  // namespace linerlife

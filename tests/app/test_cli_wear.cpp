@@ -1,0 +1,121 @@
+// `linerlife wear`: bad input refused at setup with exit 2 and no output; the
+// run itself once a charge model is in the table (issue 4 §4, §6).
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "charge/charge_model.h"
+#include "cli_runner.h"
+#include "wear/wear_laws.h"
+
+using namespace linerlife;
+using namespace linerlife::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream f(p);
+  f << text;
+}
+
+/// The bundled mill with extra lines appended to its [wear] section (the last one).
+/// The bundled mill with `wear_lines` added to its [wear] section.
+std::string bundled_with(const std::string& wear_lines) {
+  std::string text = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/qiu2001_sag.toml");
+  const auto sec = text.find("\n[wear]\n");
+  REQUIRE(sec != std::string::npos);
+  text.insert(sec + 8, wear_lines);
+  return text;
+}
+
+bool has_model(const std::string& name) {
+  for (const auto& e : charge_models())
+    if (name == e.name) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("wear: options and bad input exit 2 before any work", "[app][cli][wear]") {
+  RunResult r = run_linerlife("wear --help");
+  CHECK(r.code == 0);
+  for (const char* opt : {"--revolutions", "--amplification", "--feedback", "--rotation", "--json", "--out"})
+    CHECK_THAT(r.out, Catch::Contains(opt));
+  const fs::path dir = temp_dir("wear_bad");
+  const fs::path out = dir / "out";
+  struct Case {
+    std::string args, says;
+  };
+  for (const Case& c : {Case{"--amplification 0", "--amplification"}, Case{"--amplification -1e7", "--amplification"},
+                        Case{"--amplification 1e12", "--amplification"}, Case{"--revolutions 0", "--revolutions"},
+                        Case{"--rotation sideways", "--rotation"}}) {
+    r = run_linerlife("wear " + c.args + " --out " + out.string());
+    INFO(c.args << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains(c.says));
+    CHECK_FALSE(fs::exists(out));
+  }
+  // configuration errors name the key, the value and the line
+  struct ConfigCase {
+    std::string text, says;
+  };
+  for (const ConfigCase& c :
+       {ConfigCase{bundled_with("laws = \"abrasion/radziszewski, impact/bogus\"\n"), "impact/bogus"},
+        ConfigCase{bundled_with("laws = \"impact/finnie, impact/finnie\"\n"), "twice"},
+        ConfigCase{bundled_with("calibration_impact = 0.0\n"), "calibration_impact"},
+        ConfigCase{bundled_with("finnie_cutting_fraction = 1.5\n"), "finnie_cutting_fraction"},
+        ConfigCase{bundled_with("smoothing_tukey = \"3RZ\"\n"), "smoothing_tukey"},
+        ConfigCase{bundled_with("liner_poisson_ratio = 0.7\n"), "liner_poisson_ratio"}}) {
+    const fs::path cfg = dir / "bad.toml";
+    write(cfg, c.text);
+    r = run_linerlife("wear " + cfg.string() + " --out " + out.string());
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains(c.says));
+    CHECK_FALSE(fs::exists(out));
+  }
+  // a negative hardness is refused by the [liner] range
+  std::string text = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/qiu2001_sag.toml");
+  text = std::regex_replace(text, std::regex("hardness_bhn = 350.0"), "hardness_bhn = -350.0");
+  write(dir / "neg.toml", text);
+  r = run_linerlife("wear " + (dir / "neg.toml").string());
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("hardness_bhn"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("wear: an impact law with a charge model that gives no impacts is refused", "[app][cli][wear]") {
+  // every model in the table that resolves no impacts must be refused with an impact law
+  const fs::path dir = temp_dir("wear_combo");
+  int checked = 0;
+  for (const auto& e : charge_models()) {
+    if (e.resolves_impacts) continue;
+    std::string text = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/qiu2001_sag.toml");
+    text = std::regex_replace(text, std::regex("charge = \"layer\""), std::string("charge = \"") + e.name + "\"");
+    text = std::regex_replace(text, std::regex("\\[wear\\]\n"), "[wear]\nlaws = \"impact/bitter\"\n");
+    write(dir / "c.toml", text);
+    const RunResult r = run_linerlife("wear " + (dir / "c.toml").string());
+    INFO(e.name << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("impact spectra"));
+    ++checked;
+  }
+  SUCCEED("models without impacts checked: " << checked);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("wear: the bundled mill runs, or says which charge model is missing", "[app][cli][wear]") {
+  const RunResult r = run_linerlife("wear --json --revolutions 0.05");
+  if (!has_model("layer")) {
+    // before the charge models are merged
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("charge model \"layer\" is not available"));
+    return;
+  }
+  REQUIRE(r.code == 0);
+  for (const char* key : {"mass_loss_kg_per_m", "liner_mass_kg_per_m", "max_recession_m", "impact_fraction",
+                          "lifter_height_m", "face_angle_leading_deg", "simulated_s", "wall_s", "realtime_ratio"})
+    CHECK_THAT(r.out, Catch::Contains(std::string("\"") + key + "\""));
+}

@@ -1,0 +1,132 @@
+// `linerlife charge`: the contractual JSON keys, the output folder, and bad
+// input refused with exit 2 (issue 3 §6, §8).
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include <catch2/catch.hpp>
+
+#include "../app/cli_runner.h"
+#include "app/config.h"
+
+using namespace linerlife::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+double json_number(const std::string& json, const std::string& key) {
+  std::smatch m;
+  const std::regex re("\"" + key + "\": (-?[0-9.eE+-]+)");
+  REQUIRE(std::regex_search(json, m, re));
+  return std::stod(m[1]);
+}
+
+/// The bundled default with `key = value` in `section` replaced or added.
+std::string edited(const std::string& section, const std::string& key, const std::string& value) {
+  std::string text = linerlife::default_config_text();
+  const std::string header = "[" + section + "]";
+  const auto sec = text.find(header);
+  REQUIRE(sec != std::string::npos);
+  const auto pos = text.find("\n" + key + " = ", sec);
+  const auto next = text.find("\n[", sec + 1);
+  if (pos != std::string::npos && (next == std::string::npos || pos < next)) {
+    const auto end = text.find('\n', pos + 1);
+    text.replace(pos + 1, end - pos - 1, key + " = " + value);
+  } else {
+    text.insert(sec + header.size(), "\n" + key + " = " + value);
+  }
+  return text;
+}
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream f(p);
+  f << text;
+}
+
+}  // namespace
+
+TEST_CASE("charge --json gives the contractual keys", "[charge][cli]") {
+  const RunResult r = run_linerlife("charge --json --revolutions 1");
+  REQUIRE(r.code == 0);
+  for (const char* k : {"model", "filling", "fraction_critical", "diameter_eff_m", "toe_deg", "shoulder_deg",
+                        "com_angle_deg", "com_radius_m", "net_power_kw", "gross_power_kw", "n_layers",
+                        "n_trajectories", "charge_area_m2", "layer_speed_rpm", "simulated_s", "wall_s",
+                        "realtime_ratio"})
+    CHECK_THAT(r.out, Catch::Contains(std::string("\"") + k + "\":"));
+  CHECK_THAT(r.out, Catch::Contains("\"model\": \"layer\""));
+  CHECK(json_number(r.out, "filling") == 0.24);
+  CHECK(json_number(r.out, "diameter_eff_m") == Approx(9.9608).margin(1e-3));
+  // an anticlockwise mill: toe lower left, shoulder upper right (DESIGN.md §3)
+  const double toe = json_number(r.out, "toe_deg"), sh = json_number(r.out, "shoulder_deg");
+  CHECK(toe > 180);
+  CHECK(toe < 270);
+  CHECK(sh > 0);
+  CHECK(sh < 90);
+  CHECK(json_number(r.out, "gross_power_kw") > json_number(r.out, "net_power_kw"));
+  CHECK(json_number(r.out, "realtime_ratio") > 1);
+}
+
+TEST_CASE("charge --model empirical --variant and the clockwise pilot mill", "[charge][cli]") {
+  RunResult r = run_linerlife("charge --model empirical --json");
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out, Catch::Contains("\"model\": \"empirical\""));
+  CHECK_THAT(r.out, Catch::Contains("\"n_trajectories\": null"));
+  CHECK(json_number(r.out, "toe_deg") == Approx(240.44).margin(0.01));
+  r = run_linerlife("charge " + std::string(LINERLIFE_SOURCE_DIR) +
+                    "/data/mills/pilot_test_01.toml --variant 1.1 --revolutions 1 --json");
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out, Catch::Contains("\"variant\": \"1.1\""));
+  // a clockwise mill, in the same physical frame: toe lower right, shoulder upper left
+  CHECK(json_number(r.out, "toe_deg") > 270);
+  CHECK(json_number(r.out, "shoulder_deg") > 90);
+  CHECK(json_number(r.out, "shoulder_deg") < 180);
+}
+
+TEST_CASE("charge --out writes the results file and the charts", "[charge][cli]") {
+  const fs::path dir = temp_dir("charge_out");
+  const RunResult r = run_linerlife("charge --revolutions 1 --out " + (dir / "run").string());
+  REQUIRE(r.code == 0);
+  CHECK(fs::exists(dir / "run" / "charge.h5"));
+  CHECK(fs::exists(dir / "run" / "charge_snapshot.png"));
+  CHECK(fs::exists(dir / "run" / "lifter_forces.png"));
+  const std::string check =
+      "/usr/bin/python3 -c \"import h5py,sys; f=h5py.File(sys.argv[1]); "
+      "c=f['charge']; assert c.attrs['model']=='layer'; assert 180<c.attrs['toe_deg']<270; "
+      "assert f['snapshots/position_m'].shape[0]==36 and f['snapshots/position_m'].shape[2]==2; "
+      "assert f['loads/normal_force_n_per_m'].shape[0]==f['surface/nodes'].shape[0]; "
+      "assert len(f['loads/impacts/normal_speed_m_s'])>0; print('ok')\" " +
+      (dir / "run" / "charge.h5").string();
+  FILE* p = popen(check.c_str(), "r");
+  char buf[16] = {0};
+  const size_t n = fread(buf, 1, sizeof buf - 1, p);
+  CHECK(pclose(p) == 0);
+  CHECK(std::string(buf, n) == "ok\n");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("charge refuses bad input with exit 2 and creates no output", "[charge][cli][input]") {
+  const fs::path dir = temp_dir("charge_bad");
+  const fs::path out = dir / "out";
+  auto refused = [&](const std::string& text, const std::string& fragment) {
+    write(dir / "bad.toml", text);
+    const RunResult r = run_linerlife("charge " + (dir / "bad.toml").string() + " --out " + out.string());
+    INFO(fragment);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains(fragment));
+    CHECK_FALSE(fs::exists(out));
+  };
+  refused(edited("charge", "filling", "0.0"), "filling = 0");
+  refused(edited("charge", "ball_diameter_m", "0.3"), "spacing between lifters");
+  refused(edited("model", "time_step_s", "-0.01"), "time_step_s = -0.01");
+  refused(edited("model", "slurry_drag", "\"on\""), "slurry_drag");
+  refused(edited("mill", "discharge", "\"overflow\""), "trunnion_diameter_m");
+  refused(edited("model", "slip_model", "\"magic\""), "slip_model");
+  RunResult r = run_linerlife("charge --model magic");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("magic"));
+  r = run_linerlife("charge --variant 2.0");
+  CHECK(r.code == 2);
+  r = run_linerlife("charge --revolutions -1");
+  CHECK(r.code == 2);
+  fs::remove_all(dir);
+}

@@ -1,0 +1,155 @@
+// Calibration against measured profiles: recovery of known coefficients from
+// synthetic scans, and refusal of bad measurement files.
+#include <cmath>
+
+#include <catch2/catch.hpp>
+
+#include "forecast/calibrate.h"
+#include "geometry/build_liner_surface.h"
+#include "geometry/errors.h"
+#include "geometry/measured_profile.h"
+
+using namespace linerlife;
+using V = Eigen::Vector2d;
+
+namespace {
+
+Mill qiu() {
+  Mill m;
+  m.diameter_m = 10.36;
+  m.speed_rpm = 10.36;
+  return m;
+}
+
+LinerDesign liner() {
+  LinerDesign d;
+  d.segments = 64;
+  d.design = {0.075, 0.25, 0.15, 20, 20, 0};
+  d.element_size_m = 0.01;
+  d.density_kg_m3 = 7800;
+  return d;
+}
+
+/// Two wear mechanisms with their own coefficients: a uniform "abrasion" of
+/// everything, and an "impact" wear of the upper leading side of the lifter.
+class TwoPartRates : public RateProvider {
+ public:
+  TwoPartRates(double ka, double ki) : ka_(ka), ki_(ki) {}
+  RateSample sample(const LinerSurface& s, double) override {
+    RateSample r;
+    r.element_rate_m_s.resize(static_cast<size_t>(s.n_elements()));
+    for (int i = 0; i < s.n_elements(); ++i) {
+      const V& c = s.midpoint[i];
+      const double t = s.shell_radius_m - c.norm();
+      const double lead = s.normal[i].dot(V(-c.y(), c.x()).normalized()) > 0.3 ? 1.0 : 0.0;
+      r.element_rate_m_s[i] = ka_ * 1.5e-9 + ki_ * 4e-9 * lead * std::max(0.0, t - 0.1) / 0.225;
+    }
+    return r;
+  }
+
+ private:
+  double ka_, ki_;
+};
+
+ForecastSpec spec() {
+  ForecastSpec s;
+  s.calendar.start = {2027, 1, 1};
+  s.output_interval_h = 200;
+  return s;
+}
+
+/// Synthetic scans: the forecast with the true coefficients, recorded at
+/// `hours`, every second node of segment 0, in the unrolled frame.
+MeasuredHistory scans(const LinerSurface& s, double ka, double ki, const std::vector<double>& hours) {
+  TwoPartRates p(ka, ki);
+  ForecastSpec sp = spec();
+  sp.min_lifter_height_m = -1;
+  sp.max_face_angle_leading_deg = 1e9;
+  sp.min_plate_thickness_m = 1e-6;
+  sp.extra_output_hours = hours;
+  sp.max_operating_hours = hours.back() + 1;
+  ForecastInput in;
+  in.initial = &s;
+  const ForecastResult f = run_forecast(in, p, sp);
+  MeasuredHistory h;
+  h.source = "synthetic";
+  for (double hr : hours)
+    for (const auto& pr : f.profiles)
+      if (std::abs(pr.hours - hr) < 1e-6) {
+        MeasuredSnapshot m;
+        m.hours = hr;
+        const auto xy = segment_to_profile_xy(pr.nodes, 5.18, 0.0, 2 * M_PI / 64);
+        for (size_t i = 0; i < xy.size(); i += 2) m.points.push_back(xy[i]);
+        h.snapshots.push_back(m);
+      }
+  REQUIRE(h.snapshots.size() == hours.size());
+  return h;
+}
+
+}  // namespace
+
+TEST_CASE("calibrate recovers a known wear coefficient from synthetic profiles", "[forecast][calibrate]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  CalibrationProblem p;
+  p.names = {"k"};
+  p.initial = {1.0};
+  p.make_provider = [](const std::vector<double>& k) { return std::make_unique<TwoPartRates>(k[0], k[0]); };
+  p.input.initial = &s;
+  p.spec = spec();
+  p.segments = 64;
+  p.measured = scans(s, 1.3, 1.3, {1500, 3000, 4500});
+  const CalibrationResult r = calibrate(p);
+  INFO("fitted k = " << r.params[0] << ", rms " << r.rms_m << " m from " << r.rms_initial_m << " m, " << r.forecasts
+                     << " forecasts");
+  CHECK(r.params[0] == Approx(1.3).epsilon(0.02));
+  CHECK(r.rms_m < 0.1 * r.rms_initial_m);
+  CHECK(r.sigma_log[0] < 0.02);
+}
+
+TEST_CASE("calibrate separates two coefficients and gives a life spread", "[forecast][calibrate][slow]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  CalibrationProblem p;
+  p.names = {"abrasion", "impact"};
+  p.initial = {1.0, 1.0};
+  p.make_provider = [](const std::vector<double>& k) { return std::make_unique<TwoPartRates>(k[0], k[1]); };
+  p.input.initial = &s;
+  p.spec = spec();
+  p.segments = 64;
+  p.measured = scans(s, 0.7, 1.6, {1500, 3000, 4500});
+  const CalibrationResult r = calibrate(p);
+  INFO("fitted " << r.params[0] << ", " << r.params[1]);
+  CHECK(r.params[0] == Approx(0.7).epsilon(0.02));
+  CHECK(r.params[1] == Approx(1.6).epsilon(0.02));
+  // the remaining life from the new liner with the fit: a spread around P50
+  ForecastInput in;
+  in.initial = &s;
+  const LifeQuantiles q = life_quantiles(r.params, r.covariance_log, p.make_provider, in, spec());
+  CHECK(q.sigma_ln > 0);
+  CHECK(q.p10_h < q.p50_h);
+  CHECK(q.p50_h < q.p90_h);
+  TwoPartRates fitted(r.params[0], r.params[1]);
+  CHECK(q.p50_h == Approx(run_forecast(in, fitted, spec()).operating_hours).epsilon(1e-9));
+}
+
+TEST_CASE("bad measured profile files are refused naming the line", "[forecast][calibrate][input]") {
+  auto refuse = [](const std::string& text, const std::string& words) {
+    try {
+      parse_measured_history(text, "scans.csv");
+      FAIL("accepted: " << text);
+    } catch (const InputError& e) {
+      CHECK_THAT(e.what(), Catch::Contains(words));
+    }
+  };
+  refuse("hours,x_m,y_m\n", "no measured profile");
+  refuse("1000,0,0.07\n1000,0.1,0.07\n500,0,0.07\n", "scans.csv:3");
+  refuse("1000,0,0.07\n1000,0.1,0.07\n500,0,0.07\n", "increasing hours");
+  refuse("1000,0,0.07\n1000,abc,0.07\n", "scans.csv:2");
+  refuse("-5,0,0.07\n", "must be >= 0");
+  refuse("100,0,0.07\n100,0.1,0.07\n200,0,0.07\n200,0.1,0.07\n200,0.2,0.07\n", "at least 3");
+  const MeasuredHistory h = parse_measured_history("# scan\nhours,x_m,y_m\n0,0,0.075\n0,0.25,0.3\n0,0.508618,0.075\n",
+                                                   "ok.csv");
+  CHECK(h.snapshots.size() == 1);
+  CHECK_NOTHROW(validate_measured_history(h, 5.18, 64));
+  const MeasuredHistory bad = parse_measured_history("0,0,0.075\n0,0.25,-0.1\n0,0.508618,0.075\n", "out.csv");
+  CHECK_THROWS_WITH(validate_measured_history(bad, 5.18, 64), Catch::Contains("inside the shell"));
+}

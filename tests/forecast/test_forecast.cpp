@@ -1,0 +1,316 @@
+// The forecast integrator on analytic rate fields whose lives are known.
+#include <cmath>
+#include <random>
+
+#include <catch2/catch.hpp>
+
+#include "forecast/forecast.h"
+#include "geometry/build_liner_surface.h"
+#include "geometry/errors.h"
+#include "geometry/metrics.h"
+#include "geometry/remesh.h"
+
+using namespace linerlife;
+using V = Eigen::Vector2d;
+
+namespace {
+
+constexpr double kHour = 3600.0;
+
+Mill qiu() {
+  Mill m;
+  m.diameter_m = 10.36;
+  m.length_m = 5;
+  m.speed_rpm = 10.36;
+  return m;
+}
+
+LinerDesign liner(double lifter_height = 0.25) {
+  LinerDesign d;
+  d.segments = 64;
+  d.design = {0.075, lifter_height, 0.15, 20, 20, 0};
+  d.element_size_m = 0.01;
+  d.density_kg_m3 = 7800;
+  return d;
+}
+
+/// A rate field that is a function of each element's position.
+template <class F>
+class FieldRates : public RateProvider {
+ public:
+  explicit FieldRates(F f) : f_(f) {}
+  RateSample sample(const LinerSurface& s, double) override {
+    RateSample r;
+    r.element_rate_m_s.resize(static_cast<size_t>(s.n_elements()));
+    for (int i = 0; i < s.n_elements(); ++i) r.element_rate_m_s[i] = f_(s, i);
+    ++calls;
+    return r;
+  }
+  int calls = 0;
+
+ private:
+  F f_;
+};
+template <class F>
+FieldRates<F> field(F f) {
+  return FieldRates<F>(f);
+}
+
+double thickness(const LinerSurface& s, int i) { return s.shell_radius_m - s.midpoint[i].norm(); }
+
+ForecastSpec base_spec() {
+  ForecastSpec sp;
+  sp.calendar.start = {2027, 1, 1};
+  sp.calendar.availability = 1.0;
+  sp.output_interval_h = 500;
+  sp.max_operating_hours = 100000;
+  return sp;
+}
+
+ForecastResult forecast(const LinerSurface& s, RateProvider& p, const ForecastSpec& sp) {
+  ForecastInput in;
+  in.initial = &s;
+  in.element_size_m = 0.01;
+  in.speed_rpm = 10.36;
+  return run_forecast(in, p, sp);
+}
+
+}  // namespace
+
+TEST_CASE("a constant rate field gives linear recession that CVODE matches", "[forecast][ode]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner(0));  // plain plate, 75 mm
+  const double r0 = 0.05 / (1000 * kHour);                       // 50 mm in 1000 h
+  auto p = field([r0](const LinerSurface&, int) { return r0; });
+  ForecastSpec sp = base_spec();
+  sp.min_plate_thickness_m = 0.025;
+  sp.output_interval_h = 100;
+  const ForecastResult f = forecast(s, p, sp);
+  REQUIRE(f.reached);
+  CHECK(f.criterion == "min_plate_thickness");
+  // exact: 0.05 m at r0; nodes of chords recede by depth / cos(half the chord
+  // angle), 1 + 5e-7 here
+  CHECK(f.operating_hours == Approx(1000).epsilon(1e-5));
+  for (const LifeRecord& r : f.history) CHECK(r.min_thickness_m == Approx(0.075 - r0 * r.hours * kHour).margin(1e-6));
+  // remeshed every half element (5 mm): 9 times before the end
+  CHECK(f.stats.remeshes == 9);
+  CHECK(f.stats.cvode_steps > 0);
+}
+
+TEST_CASE("root finding stops at each criterion within tolerance", "[forecast][ode]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  const double r0 = 0.1 / (1000 * kHour);
+  SECTION("minimum lifter height: only the top recedes") {
+    // the upper lifter (above 0.12 m) erodes uniformly at r0 along its normals:
+    // the flat top, and with it the crest, recedes at exactly r0 (the convex
+    // top corners stay sharp, offset by the miter)
+    auto p = field([r0](const LinerSurface& x, int i) { return thickness(x, i) > 0.075 + 0.12 ? r0 : 0.0; });
+    ForecastSpec sp = base_spec();
+    sp.min_lifter_height_m = 0.20;
+    const ForecastResult f = forecast(s, p, sp);
+    REQUIRE(f.criterion == "min_lifter_height");
+    CHECK(f.history.back().lifter_height_m == Approx(0.20).margin(1e-5));
+    CHECK(f.operating_hours == Approx(500).epsilon(1e-3));  // 0.05 m of the top at r0
+  }
+  SECTION("maximum leading face angle: the leading face recedes with height") {
+    // elements facing the rotation (their inward normal points towards +theta
+    // at the lifter, i.e. the leading face of an anticlockwise mill)
+    auto p = field([r0](const LinerSurface& x, int i) {
+      const V& c = x.midpoint[i];
+      const V et(-c.y(), c.x());
+      const double t = thickness(x, i);
+      return x.normal[i].dot(et.normalized()) > 0.5 && t > 0.076 ? r0 * (t - 0.075) / 0.25 : 0.0;
+    });
+    ForecastSpec sp = base_spec();
+    sp.max_face_angle_leading_deg = 35;
+    const ForecastResult f = forecast(s, p, sp);
+    REQUIRE(f.criterion == "max_face_angle_leading");
+    CHECK(f.history.back().face_angle_leading_deg == Approx(35).margin(0.02));
+    CHECK(f.history.back().face_angle_trailing_deg == Approx(20).margin(0.01));
+  }
+}
+
+namespace {
+
+/// Thickness-driven recession on a plain plate: dt/dtau = -k (t - t_f), so
+/// t(tau) = t_f + (t0 - t_f) exp(-k tau) and the plate reaches t_c at
+/// tau* = ln((t0 - t_f) / (t_c - t_f)) / k.
+struct Decay {
+  double k = 1.0 / (2000 * kHour), t_f = 0.005, t0 = 0.075, t_c = 0.025;
+  double life_h() const { return std::log((t0 - t_f) / (t_c - t_f)) / k / kHour; }
+};
+
+ForecastResult decay_forecast(ForecastSpec sp) {
+  const Decay d;
+  const LinerSurface s = build_liner_surface(qiu(), liner(0));
+  auto p = field([d](const LinerSurface& x, int i) { return d.k * std::max(0.0, thickness(x, i) - d.t_f); });
+  sp.min_plate_thickness_m = d.t_c;
+  return forecast(s, p, sp);
+}
+
+}  // namespace
+
+TEST_CASE("the ODE method converges to the exact life of a feedback problem", "[forecast][ode]") {
+  const double exact = Decay().life_h();  // 2000 ln(3.5) = 2505.5 h
+  ForecastSpec sp = base_spec();
+  sp.refresh_always = true;  // the rate re-evaluated on every right-hand side
+  sp.rtol = 1e-7;
+  sp.atol = 1e-9;
+  const ForecastResult f = decay_forecast(sp);
+  CHECK(f.operating_hours == Approx(exact).epsilon(1e-4));
+
+  // default refresh policy: drives when the profile moved refresh_tol_m
+  ForecastSpec d = base_spec();
+  const ForecastResult a = decay_forecast(d);
+  CHECK(a.operating_hours == Approx(exact).epsilon(0.005));
+  d.rtol /= 10;
+  const ForecastResult b = decay_forecast(d);
+  CHECK(std::abs(b.operating_hours / a.operating_hours - 1) < 0.005);
+  CHECK(a.stats.charge_redrives < 60);
+}
+
+TEST_CASE("euler converges at first order in its step", "[forecast][euler]") {
+  const double exact = Decay().life_h();
+  double err[3];
+  const double steps[3] = {200, 100, 50};
+  for (int i = 0; i < 3; ++i) {
+    ForecastSpec sp = base_spec();
+    sp.method = ForecastMethod::Euler;
+    sp.euler_step_h = steps[i];
+    err[i] = decay_forecast(sp).operating_hours - exact;
+  }
+  // explicit Euler on a decaying rate overshoots the wear: the life comes out short
+  CHECK(err[0] < 0);
+  const double order1 = std::log2(err[0] / err[1]), order2 = std::log2(err[1] / err[2]);
+  INFO("errors " << err[0] << " " << err[1] << " " << err[2] << " h; observed orders " << order1 << ", " << order2);
+  CHECK(order1 == Approx(1.0).margin(0.2));
+  CHECK(order2 == Approx(1.0).margin(0.2));
+}
+
+TEST_CASE("a liner that already meets a criterion is refused", "[forecast][input]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  auto p = field([](const LinerSurface&, int) { return 1e-9; });
+  ForecastSpec sp = base_spec();
+  sp.min_lifter_height_m = 0.3;  // the new lifter is 0.25 m
+  CHECK_THROWS_AS(forecast(s, p, sp), InputError);
+  try {
+    forecast(s, p, sp);
+  } catch (const InputError& e) {
+    CHECK(e.key() == "forecast.min_lifter_height_m");
+    CHECK_THAT(e.what(), Catch::Contains("already meets"));
+  }
+}
+
+TEST_CASE("a failing rate model ends the run as a simulation failure", "[forecast][failure]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  int n = 0;
+  auto nan_after = field([&n](const LinerSurface&, int i) { return (i == 0 && ++n > 3) ? std::nan("") : 1e-8; });
+  ForecastSpec sp = base_spec();
+  sp.refresh_always = true;
+  CHECK_THROWS_AS(forecast(s, nan_after, sp), SimulationError);
+  // a rate field that is pure noise: CVODE cannot meet a tight tolerance
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  auto noise = field([&](const LinerSurface&, int) { return 1e-7 * u(rng); });
+  sp.rtol = 1e-10;
+  sp.atol = 1e-12;
+  try {
+    forecast(s, noise, sp);
+    FAIL("a noise rate field integrated without complaint");
+  } catch (const SimulationError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("CVODE"));
+    CHECK_THAT(e.what(), Catch::Contains("operating hours"));
+  }
+}
+
+TEST_CASE("the horizon ends a life that reaches no criterion", "[forecast][ode]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  auto p = field([](const LinerSurface&, int) { return 0.0; });
+  ForecastSpec sp = base_spec();
+  sp.max_operating_hours = 2000;
+  const ForecastResult f = forecast(s, p, sp);
+  CHECK_FALSE(f.reached);
+  CHECK(f.criterion == "horizon");
+  CHECK(f.operating_hours == Approx(2000));
+  CHECK(iso_date(f.relining_date) == iso_date(sp.calendar.date_after(2000)));
+}
+
+TEST_CASE("rate smoothing keeps the wear, keeps uniform fields and adds no extrema", "[forecast][smoothing]") {
+  // a remeshed surface has elements of unequal length
+  LinerSurface s = build_liner_surface(qiu(), liner());
+  std::vector<double> d(s.n_nodes(), 0.0);
+  for (int i = 0; i < s.n_nodes(); ++i) d[i] = 0.004 * (1 + std::sin(0.37 * i));
+  s = remesh(s, d, RemeshOptions{0.01}).surface;
+  double lmin = 1, lmax = 0;
+  for (double l : s.length) lmin = std::min(lmin, l), lmax = std::max(lmax, l);
+  REQUIRE(lmax > 2 * lmin);
+  const std::vector<double> uniform(static_cast<size_t>(s.n_elements()), 3e-9);
+  for (double v : smooth_along_surface(s, uniform, 5)) CHECK(v == Approx(3e-9).epsilon(1e-12));
+  std::vector<double> step(static_cast<size_t>(s.n_elements()));
+  double before = 0, after = 0;
+  for (int i = 0; i < s.n_elements(); ++i) step[i] = (i % 97) < 40 ? 2e-9 : 0.0;
+  const std::vector<double> sm = smooth_along_surface(s, step, 3);
+  for (int i = 0; i < s.n_elements(); ++i) {
+    before += s.length[i] * step[i];
+    after += s.length[i] * sm[i];
+    CHECK(sm[i] >= -1e-24);
+    CHECK(sm[i] <= 2e-9 * (1 + 1e-12));
+  }
+  CHECK(after == Approx(before).epsilon(1e-12));
+}
+
+TEST_CASE("a forecast resumed from any checkpoint ends exactly as the uninterrupted run", "[forecast][resume]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  // a feedback field on the lifter: deeper on the leading side and at the top
+  auto rate = [](const LinerSurface& x, int i) {
+    const V& c = x.midpoint[i];
+    const double t = thickness(x, i);
+    const double lead = x.normal[i].dot(V(-c.y(), c.x()).normalized());
+    return 2e-9 * (1 + 2 * std::max(0.0, lead)) * (0.5 + std::max(0.0, t - 0.075) / 0.25);
+  };
+  ForecastSpec sp = base_spec();
+  ForecastInput in;
+  in.initial = &s;
+  for (ForecastMethod m : {ForecastMethod::Ode, ForecastMethod::Euler}) {
+    sp.method = m;
+    auto p = field(rate);
+    std::vector<ForecastCheckpoint> checkpoints;
+    ForecastHooks hooks;
+    hooks.checkpoint_interval_s = 0;
+    hooks.checkpoint = [&](const ForecastCheckpoint& c) { checkpoints.push_back(c); };
+    const ForecastResult whole = run_forecast(in, p, sp, hooks);
+    REQUIRE(whole.reached);
+    REQUIRE(checkpoints.size() > 5);
+    for (size_t k : {size_t(0), checkpoints.size() / 3, checkpoints.size() - 1}) {
+      auto q = field(rate);
+      ForecastHooks resume;
+      resume.resume = &checkpoints[k];
+      const ForecastResult again = run_forecast(in, q, sp, resume);
+      INFO(method_name(m) << ": resumed from checkpoint " << k << " at " << checkpoints[k].t_s / 3600 << " h");
+      CHECK(again.operating_hours == whole.operating_hours);  // bit for bit
+      CHECK(again.criterion == whole.criterion);
+      REQUIRE(again.history.size() == whole.history.size());
+      for (size_t i = 0; i < whole.history.size(); ++i) {
+        CHECK(again.history[i].hours == whole.history[i].hours);
+        CHECK(again.history[i].lifter_height_m == whole.history[i].lifter_height_m);
+      }
+      CHECK(again.stats.charge_redrives == whole.stats.charge_redrives);
+      CHECK(again.stats.cvode_steps == whole.stats.cvode_steps);
+    }
+  }
+}
+
+TEST_CASE("a failing forecast hands back its partial results", "[forecast][failure]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  int n = 0;
+  auto p = field([&n](const LinerSurface&, int i) { return (i == 0 && ++n > 20) ? std::nan("") : 1e-8; });
+  ForecastSpec sp = base_spec();
+  ForecastInput in;
+  in.initial = &s;
+  ForecastResult partial;
+  ForecastHooks hooks;
+  hooks.partial = &partial;
+  CHECK_THROWS_AS(run_forecast(in, p, sp, hooks), SimulationError);
+  CHECK(partial.criterion == "failed");
+  CHECK(partial.history.size() >= 1);
+  CHECK(partial.operating_hours > 0);
+}
