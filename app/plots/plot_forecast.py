@@ -11,6 +11,10 @@ def draw(h5, out):
     f = h5["/forecast"]
     R = float(h5["/surface"].attrs["shell_radius_m"])
     hist = f["history"]
+
+    def H(key):  # a history column as a numpy array (h5py datasets do not take 2D indexing)
+        return np.asarray(hist[key])
+
     hours = np.asarray(hist["hours"])
     date = f.attrs["relining_date"]
     crit = f.attrs["criterion"]
@@ -42,8 +46,8 @@ def draw(h5, out):
     fig, axes = plt.subplots(2, 2, figsize=(9, 6), sharex=True)
     axes[0, 0].plot(hours, 1000 * np.asarray(hist["lifter_height_m"]))
     axes[0, 0].set_ylabel("lifter height [mm]")
-    axes[0, 1].plot(hours, hist["face_angle_leading_deg"], label="leading")
-    axes[0, 1].plot(hours, hist["face_angle_trailing_deg"], label="trailing")
+    axes[0, 1].plot(hours, H("face_angle_leading_deg"), label="leading")
+    axes[0, 1].plot(hours, H("face_angle_trailing_deg"), label="trailing")
     axes[0, 1].set_ylabel("face angle from radial [deg]")
     axes[0, 1].legend(fontsize=8)
     axes[1, 0].plot(hours, 1000 * np.asarray(hist["min_thickness_m"]))
@@ -58,14 +62,14 @@ def draw(h5, out):
 
     # Charge indicators against operating hours.
     fig, axes = plt.subplots(1, 3, figsize=(11, 3.5))
-    axes[0].plot(hours, hist["net_power_kw"])
+    axes[0].plot(hours, H("net_power_kw"))
     axes[0].set_ylabel("net power [kW]")
-    axes[1].plot(hours, hist["toe_deg"], label="toe")
-    axes[1].plot(hours, hist["shoulder_deg"], label="shoulder")
+    axes[1].plot(hours, H("toe_deg"), label="toe")
+    axes[1].plot(hours, H("shoulder_deg"), label="shoulder")
     axes[1].set_ylabel("angle [deg, mill frame]")
     axes[1].legend(fontsize=8)
-    axes[2].plot(hours, hist["direct_impact_fraction"], label="direct liner impacts")
-    axes[2].plot(hours, hist["impact_fraction"], label="impact share of wear")
+    axes[2].plot(hours, H("direct_impact_fraction"), label="direct liner impacts")
+    axes[2].plot(hours, H("impact_fraction"), label="impact share of wear")
     axes[2].set_ylabel("fraction")
     axes[2].legend(fontsize=8)
     for a in axes:
