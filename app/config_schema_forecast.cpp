@@ -55,8 +55,9 @@ void add_forecast_keys(Schema& s) {
                          [](Config& c, const std::string& v) { c.forecast.refresh_always = v == "always"; },
                          [](const Config& c) { return std::string(c.forecast.refresh_always ? "always" : "auto"); }));
   K.push_back(string_key("forecast", "rate_model",
-                         "Rates between drives: \"secant\" (linear along the path of the last two drives) or \"frozen\"",
-                         {"secant", "frozen"}, "secant", [](Config& c, const std::string& v) { c.forecast.rate_model = v; },
+                         "Rates between drives: \"frozen\" (those of the last drive) or \"secant\" (linear along the path of the last two "
+                         "drives; smooth models only, docs/validation/forecast.md)",
+                         {"secant", "frozen"}, "frozen", [](Config& c, const std::string& v) { c.forecast.rate_model = v; },
                          [](const Config& c) { return c.forecast.rate_model; }));
   K.push_back(int_key("forecast", "rate_smoothing_passes", "Flux-form 1-2-1 smoothing passes over the rate field", 0, 50,
                       false, [](Config& c, long long v) { c.forecast.rate_smoothing_passes = static_cast<int>(v); },

@@ -21,7 +21,8 @@ struct ForecastSpec {
   double atol = 1e-6;                // [m] CVODE absolute tolerance on recession depth
   double refresh_tol_m = 0.002;      // [m] re-drive the charge once the profile moved this far since the last drive
   bool refresh_always = false;       // re-drive on every right-hand side (refresh = "always")
-  std::string rate_model = "secant";  // between drives: "frozen" (rates of the last drive) | "secant" (linear in the path)
+  std::string rate_model = "frozen";  // between drives: "frozen" (rates of the last drive) | "secant" (linear in the path);
+                                      // frozen by default: docs/validation/forecast.md (the secant amplifies drive noise)
   int rate_smoothing_passes = 2;     // conservative 1-2-1 passes over element rates along the surface
   double revolutions_per_drive = 20;  // [rev] averaged per charge drive
   double remesh_depth_m = 0;         // [m] remesh once any node receded this far; 0: half the element size

@@ -158,14 +158,30 @@ TEST_CASE("the ODE method converges to the exact life of a feedback problem", "[
   const ForecastResult f = decay_forecast(sp);
   CHECK(f.operating_hours == Approx(exact).epsilon(1e-4));
 
-  // default refresh policy: drives when the profile moved refresh_tol_m
+  // drives when the profile moved refresh_tol_m, secant rates between them:
+  // second order in refresh_tol_m on a smooth rate field
   ForecastSpec d = base_spec();
+  d.rate_model = "secant";
   const ForecastResult a = decay_forecast(d);
   CHECK(a.operating_hours == Approx(exact).epsilon(0.005));
   d.rtol /= 10;
   const ForecastResult b = decay_forecast(d);
   CHECK(std::abs(b.operating_hours / a.operating_hours - 1) < 0.005);
   CHECK(a.stats.charge_redrives < 60);
+
+  // the default, frozen rates between drives: first order in refresh_tol_m
+  // (halving it halves the error), and rtol no longer matters
+  ForecastSpec fz = base_spec();
+  REQUIRE(fz.rate_model == "frozen");
+  const double e1 = std::abs(decay_forecast(fz).operating_hours / exact - 1);
+  fz.refresh_tol_m /= 2;
+  const double e2 = std::abs(decay_forecast(fz).operating_hours / exact - 1);
+  fz.rtol /= 10;
+  const double e3 = std::abs(decay_forecast(fz).operating_hours / exact - 1);
+  INFO("frozen: error " << e1 << " at refresh_tol_m, " << e2 << " at half of it, " << e3 << " with rtol / 10");
+  CHECK(e1 < 0.05);
+  CHECK(e2 == Approx(e1 / 2).epsilon(0.2));
+  CHECK(std::abs(e3 - e2) < 0.005);
 }
 
 TEST_CASE("euler converges at first order in its step", "[forecast][euler]") {
