@@ -45,6 +45,14 @@ def errors(runs, key, ver, cases=None):
     return rel, dif
 
 
+def sense(d):
+    return 1.0 if d["rot"] == "ccw" else -1.0
+
+
+def wrap180(a):
+    return (a + 180.0) % 360.0 - 180.0
+
+
 def sd(v):
     return st.stdev(v) if len(v) > 1 else float("nan")
 
@@ -80,26 +88,41 @@ def main(path, png=None):
             sa = [sd([abs(x) for x in stats[v]]) for v in VERSIONS]
             print(f"| {short} | " + " | ".join(f"{x:.0f}" for x in mr + ma + sr + sa) + " |")
         print()
-    print("Angle errors against Morrell in degrees (mean +- standard deviation of model - Morrell), all mills:\n")
+    print("Angle differences in degrees, model - Morrell, measured along the direction of rotation (a clockwise "
+          "mill's difference is negated), mean +- standard deviation over the mills run:\n")
     print("| | V-1.0 | V-1.1 | V-1.2 |" + (" DEM |" if have_dem else ""))
     print("|---|---|---|---|" + ("---|" if have_dem else ""))
     for key, lab, _ in IND[:3]:
         line = f"| {lab} |"
         for v in VERSIONS + (["dem"] if have_dem else []):
-            dif = errors(runs, key, v)[1]
+            dif = [sense(runs[c]) * wrap180(float(d[v][key]) - float(d["M"][key])) for c, d in runs.items() if v in d]
             line += f" {st.mean(dif):+.1f} +- {sd(dif):.1f} (n={len(dif)}) |"
         print(line)
     print()
     if have_dem:
-        print("DEM against the layer model V-1.2 (model - V-1.2):\n")
+        print(f"Against the DEM on the {len(have_dem)} mills it was run on ({', '.join(have_dem)}): mean absolute "
+              "error in % (angles in degrees along the rotation, mean absolute):\n")
+        print("| | Morrell | V-1.0 | V-1.1 | V-1.2 |")
+        print("|---|---|---|---|---|")
+        for key, lab, _ in IND:
+            line = f"| {lab} |"
+            for v in ["M"] + VERSIONS:
+                if key == "net_power_kw":
+                    e = [abs(100.0 * (float(runs[c][v][key]) / float(runs[c]["dem"][key]) - 1.0)) for c in have_dem]
+                    line += f" {st.mean(e):.0f} % |"
+                else:
+                    e = [abs(wrap180(float(runs[c][v][key]) - float(runs[c]["dem"][key]))) for c in have_dem]
+                    line += f" {st.mean(e):.1f} |"
+            print(line)
+        print()
+        print("DEM - layer V-1.2 per mill (angles along the rotation):\n")
         print("| case | toe [deg] | shoulder [deg] | CoM [deg] | power [%] |")
         print("|---|---|---|---|---|")
         for c in have_dem:
             d = runs[c]
             a, b = d["dem"], d["1.2"]
-            print(f"| {c} | {float(a['toe_deg']) - float(b['toe_deg']):+.1f} | "
-                  f"{float(a['shoulder_deg']) - float(b['shoulder_deg']):+.1f} | "
-                  f"{float(a['com_deg']) - float(b['com_deg']):+.1f} | "
+            dd = [sense(d) * wrap180(float(a[k]) - float(b[k])) for k in ("toe_deg", "shoulder_deg", "com_deg")]
+            print(f"| {c} | {dd[0]:+.1f} | {dd[1]:+.1f} | {dd[2]:+.1f} | "
                   f"{100 * (float(a['net_power_kw']) / float(b['net_power_kw']) - 1):+.0f} |")
         print()
     if png:
@@ -111,18 +134,24 @@ def main(path, png=None):
         for ax, (key, lab, _) in zip(axes, IND):
             lo, hi = float("inf"), -float("inf")
             for v, (m, name) in marks.items():
-                xs = [float(d["M"][key]) for d in runs.values() if v in d]
-                ys = [float(d[v][key]) for d in runs.values() if v in d]
+                if key == "net_power_kw":  # the mills span 1 kW to 6 MW: the ratio against phi
+                    xs = [d["phi"] for d in runs.values() if v in d]
+                    ys = [float(d[v][key]) / float(d["M"][key]) for d in runs.values() if v in d]
+                else:
+                    xs = [float(d["M"][key]) for d in runs.values() if v in d]
+                    ys = [float(d[v][key]) for d in runs.values() if v in d]
                 if not xs:
                     continue
                 ax.scatter(xs, ys, marker=m, label=name, s=22 if v != "dem" else 70, alpha=0.8)
                 lo, hi = min(lo, *xs, *ys), max(hi, *xs, *ys)
-            ax.plot([lo, hi], [lo, hi], "k-", lw=0.6)
             if key == "net_power_kw":
-                ax.set_xscale("log")
-                ax.set_yscale("log")
-            ax.set_xlabel(f"Morrell C-model: {lab}")
-            ax.set_ylabel(f"model: {lab}")
+                ax.axhline(1.0, color="k", lw=0.6)
+                ax.set_xlabel("fraction of critical speed phi")
+                ax.set_ylabel("net power / Morrell's P_t + P_c")
+            else:
+                ax.plot([lo, hi], [lo, hi], "k-", lw=0.6)
+                ax.set_xlabel(f"Morrell C-model: {lab}")
+                ax.set_ylabel(f"model: {lab}")
             ax.grid(True, lw=0.3)
         axes[0].legend(fontsize=8)
         fig.suptitle("Layer model (V-1.0/1.1/1.2) and DEM against Morrell's C-model: Qiu mill and 16 pilot tests",
