@@ -69,8 +69,8 @@ void add_model_keys(Schema& s) {
                               [](Config& c, const std::string& v) { c.model.variant = v; },
                               [](const Config& c) { return c.model.variant; }));
   s.keys.push_back(real_key("model", "time_step_s", "s",
-                            "Time step of the layer model (a step that moves the shell more than a quarter of a "
-                            "media diameter is sub-stepped; docs/models/layer.md)",
+                            "Time step of the layer model (a step that moves the shell more than 0.45 "
+                            "media diameters per step is sub-stepped; docs/models/layer.md §9)",
                             0.0, 0.1, true, false, 0.005, [](Config& c, double v) { c.model.time_step_s = v; },
                             [](const Config& c) { return c.model.time_step_s; }));
   // Charge-motion issue: the layer model's options (docs/models/layer.md).
