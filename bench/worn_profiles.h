@@ -61,8 +61,15 @@ inline double radius_on_ray(const std::vector<Eigen::Vector2d>& p, double theta)
     const double det = -e.x() * u.y() + e.y() * u.x();
     if (std::abs(det) < 1e-15) continue;
     const double s = (a.x() * u.y() - a.y() * u.x()) / det;
-    const double r = (e.x() * a.y() - e.y() * a.x()) / det;
-    if (s >= -1e-12 && s <= 1 + 1e-12 && r > 0) best = std::min(best, r);
+    const double r = (a.x() * e.y() - a.y() * e.x()) / det;
+    if (s >= -1e-9 && s <= 1 + 1e-9 && r > 0) best = std::min(best, r);
+  }
+  if (!std::isfinite(best)) {  // a ray along a segment edge that rounding made miss: the nearest end node
+    const Eigen::Vector2d& e = std::abs(std::remainder(std::atan2(p.front().y(), p.front().x()) - theta, 2 * M_PI)) <
+                                       std::abs(std::remainder(std::atan2(p.back().y(), p.back().x()) - theta, 2 * M_PI))
+                                   ? p.front()
+                                   : p.back();
+    best = e.norm();
   }
   return best;
 }
