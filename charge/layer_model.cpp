@@ -126,6 +126,7 @@ class LayerSim {
   // ---- setup
   void setup_geometry();
   void setup_layers();
+  void layout_slots();
   void setup_flight_angles();
   void setup_initial_fill();
   // ---- state queries
@@ -286,6 +287,8 @@ class LayerSim {
   // ---- layers and state
   std::vector<Layer> L_;
   int n_open_ = 0;                          // layers that may hold elements (0 .. n_open_-1)
+  int partial_layer_ = -1;                  // version 1.2: the layer cut by r_i, open with a share of its cells
+  int partial_S_full_ = 0;                  // its cell count when whole
   std::vector<std::vector<HeldLaunch>> held_;  // [held layer][segment]
   int n_held_layers_ = 0;
   std::vector<int> occ_;                    // element id per slot, -1 empty
@@ -423,15 +426,10 @@ void LayerSim::setup_geometry() {
   if (c.discharge == Discharge::Overflow) y_pool_ = -c.trunnion_radius_m;  // slurry at the trunnion (Morrell 1996)
 }
 
-void LayerSim::setup_layers() {
-  const int nl = static_cast<int>(std::floor(R_eff_ / d_));
-  L_.resize(nl);
-  std::vector<double> r(nl);
+void LayerSim::layout_slots() {
+  // offsets of each layer's slots in the occupancy array, and the slot direction tables
   int off = 0;
-  for (int j = 0; j < nl; ++j) {
-    Layer& l = L_[j];
-    l.r = r[j] = R_eff_ - (j + 0.5) * d_;
-    l.S = std::max(1, static_cast<int>(std::lround(kTwoPi * l.r / d_)));  // equal-area cells of about d x d
+  for (Layer& l : L_) {
     l.delta = kTwoPi / l.S;
     l.inv_delta = l.S / kTwoPi;
     l.offset = off;
@@ -440,11 +438,23 @@ void LayerSim::setup_layers() {
   occ_.assign(off, -1);
   slot_cos_.resize(off);
   slot_sin_.resize(off);
-  for (int j = 0; j < nl; ++j)
-    for (int q = 0; q < L_[j].S; ++q) {
-      slot_cos_[L_[j].offset + q] = std::cos(q * L_[j].delta);
-      slot_sin_[L_[j].offset + q] = std::sin(q * L_[j].delta);
+  for (const Layer& l : L_)
+    for (int q = 0; q < l.S; ++q) {
+      slot_cos_[l.offset + q] = std::cos(q * l.delta);
+      slot_sin_[l.offset + q] = std::sin(q * l.delta);
     }
+}
+
+void LayerSim::setup_layers() {
+  const int nl = static_cast<int>(std::floor(R_eff_ / d_));
+  L_.resize(nl);
+  std::vector<double> r(nl);
+  for (int j = 0; j < nl; ++j) {
+    Layer& l = L_[j];
+    l.r = r[j] = R_eff_ - (j + 0.5) * d_;
+    l.S = std::max(1, static_cast<int>(std::lround(kTwoPi * l.r / d_)));  // equal-area cells of about d x d
+  }
+  layout_slots();
   dir_tau_.assign(nl, std::numeric_limits<double>::quiet_NaN());
   dir_c_.assign(nl, 1.0);
   dir_s_.assign(nl, 0.0);
@@ -501,11 +511,30 @@ void LayerSim::setup_layers() {
   for (int j = 0; j < nl; ++j) L_[j].omega = w[j];
   setup_flight_angles();
   // Which layers may hold elements: every layer that turns forward (v > 0,
-  // outside z r_i); version 1.2 keeps only those outside r_i (thesis §4.6.2).
+  // outside z r_i). Version 1.2 confines the charge to the annulus between
+  // Morrell's inner radius r_i and the liner (thesis §4.6.2, eq. 4.14, Fig.
+  // 4-26): the layers whose band [r - d/2, r + d/2] lies outside r_i are
+  // open, and the layer the circle r_i cuts is open with the share
+  //   f = (r + d/2 - r_i) / d
+  // of its cells (fewer, wider cells: f S of them), so that the open cells
+  // hold the annulus' area, (r_m - r_i) / d layers' worth. The capacity is
+  // then continuous in r_i and in the liner radius: a worn liner (larger
+  // r_m) or a lower shoulder (other r_i) no longer switches a whole layer of
+  // about 1/9 of the bed's depth in or out (docs/models/layer-worn.md).
   n_open_ = 0;
   for (int j = 0; j < nl; ++j) {
-    const bool open = L_[j].omega > 0 && (variant_ != 12 || L_[j].r >= r_i_);
-    if (!open) break;
+    if (!(L_[j].omega > 0)) break;
+    if (variant_ == 12 && L_[j].r - 0.5 * d_ < r_i_) {
+      const double f = (L_[j].r + 0.5 * d_ - r_i_) / d_;
+      const int S = static_cast<int>(std::lround(f * L_[j].S));
+      if (f > 0 && S >= 1) {
+        partial_layer_ = j;
+        partial_S_full_ = L_[j].S;
+        L_[j].S = S;
+        n_open_ = j + 1;
+      }
+      break;
+    }
     n_open_ = j + 1;
   }
   // The charge must fit into the open layers; open more (slowest first) if not.
@@ -516,12 +545,17 @@ void LayerSim::setup_layers() {
     for (int j = 0; j < n_open_; ++j) c += L_[j].S;
     return c;
   };
+  if (capacity() < N_ && partial_layer_ >= 0) {  // a partial layer is not enough: open it whole first
+    L_[partial_layer_].S = partial_S_full_;
+    partial_layer_ = -1;
+  }
   while (capacity() < N_ && n_open_ < nl) {
     if (L_[n_open_].omega <= 0) L_[n_open_].omega = std::max(1e-3 * omega_, L_[n_open_ - 1].omega * 0.5);
     ++n_open_;
     notes_.push_back("the charge does not fit outside the inner radius; a slower layer was opened");
   }
   if (capacity() < N_) throw SimulationError("layer model: the charge does not fit inside the mill");
+  layout_slots();  // the partial layer has fewer cells
   m_ = rho_c_ * J_ * metrics_.free_area_m2 / N_;
   if (centrifuged) notes_.push_back(fmt::format("the mill runs at {:.3f} of critical, beyond Morrell's phi_c = {:.3f}: the charge centrifuges", phi_, phi_c));
   sin_fa_.resize(nl);
@@ -598,7 +632,18 @@ void LayerSim::setup_flight_angles() {
         const double above = (j + 0.5) * d_ - sm.lifter_height_m;
         const double alpha = std::max(sm.face_angle_leading_deg * kPi / 180.0,
                                       std::asin(std::clamp(above / a_, 0.0, 1.0)));
-        const LifterLaunch ll = lifter_launch(omega_, r0, r_crest, a_, alpha, mu_, in_.model.lifter_slide, cl);
+        // Support (docs/models/layer-worn.md): a ball of layer j >= 1 rests on
+        // the layer outside it as well as on the lifter (its face or, above
+        // the crest, the crest corner). It leaves when both have let go: no
+        // earlier than it would as an unheld layer, min(own angle, flight
+        // angle of the layer outside), the rule below for unheld layers. As
+        // the lifter wears towards j d the crest corner's "face" steepens to
+        // 90 deg and McIvor's angle (eq. 4.5) drops below the horizontal;
+        // without this floor that released layer j - and, through the
+        // support rule, every layer inside it - far below the outer layer,
+        // and the layer jumped back to the unheld rule at h = j d.
+        const double bed_hold = j >= 1 && l.omega > 0 ? std::min(davis(j), prev_min) : -kInf;
+        const LifterLaunch ll = lifter_launch(omega_, r0, r_crest, a_, alpha, mu_, in_.model.lifter_slide, cl, bed_hold);
         h.released = ll.released;
         if (!ll.released) continue;
         h.release = ll.release_rad;

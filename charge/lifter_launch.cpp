@@ -17,11 +17,12 @@ double mcivor_flight_angle(double k, double beta, double mu) {
 }
 
 LifterLaunch lifter_launch(double w, double r0, double r_crest, double a, double alpha, double mu, bool slide,
-                           double release) {
+                           double release, double min_release) {
   using V = Eigen::Vector2d;
   LifterLaunch L;
   const double k = w * w * r0 / kGravity;
   double th0 = mcivor_flight_angle(k, alpha, mu);
+  if (std::isfinite(th0) && min_release > th0) th0 = min_release;
   if (std::isfinite(release)) th0 = std::min(th0, release);
   if (!std::isfinite(th0)) return L;  // carried round: never released
   L.released = true;

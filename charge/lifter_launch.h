@@ -40,8 +40,12 @@ struct LifterLaunch {
 /// crest leaves at once (launch = release).
 /// release_rad, when finite, replaces McIvor's angle (a release forced
 /// earlier, as by the shoulder clipping of thesis §4.6.1).
+/// min_release_rad: the ball is held at least up to this angle by something
+/// other than the face (the layer it rests on); McIvor's angle is raised to it
+/// (before release_rad applies). A ball never released stays so.
 LifterLaunch lifter_launch(double omega_rad_s, double start_radius_m, double crest_radius_m, double ball_radius_m,
                            double face_angle_rad, double friction_coefficient, bool slide,
-                           double release_rad = std::numeric_limits<double>::quiet_NaN());
+                           double release_rad = std::numeric_limits<double>::quiet_NaN(),
+                           double min_release_rad = -std::numeric_limits<double>::infinity());
 
 }  // namespace linerlife

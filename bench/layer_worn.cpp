@@ -1,0 +1,124 @@
+// bench_layer_worn: a charge model on the worn profiles of a forecast
+// (docs/models/layer-worn.md).
+//
+//   bench_layer_worn FORECAST.h5 [options]
+//     --model NAME      charge model (layer, dem, empirical; default: the run's)
+//     --variant V       layer model version (1.0, 1.1, 1.2)
+//     --revs N          revolutions averaged (default: the forecast's per drive)
+//     --every K         every K-th profile (default 1)
+//     --only i,j,...    these profile indices only
+//     --blend i,j,n     n + 1 profiles blended from profile i to profile j
+//     --csv-dir DIR     also write each profile used as a profile CSV (docs/profile-csv.md)
+//
+// FORECAST.h5 is the results file of `linerlife forecast --out DIR`. Prints one
+// tab-separated row per profile: hours, lifter metrics, and the indicators.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "bench/worn_profiles.h"
+#include "charge/charge_model.h"
+#include "geometry/measured_profile.h"
+#include "geometry/metrics.h"
+
+using namespace linerlife;
+
+static std::vector<int> parse_ints(const std::string& s) {
+  std::vector<int> v;
+  std::stringstream ss(s);
+  std::string tok;
+  while (std::getline(ss, tok, ',')) v.push_back(std::stoi(tok));
+  return v;
+}
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: %s FORECAST.h5 [--model M] [--variant V] [--revs N] [--every K] [--only i,j] "
+                         "[--blend i,j,n] [--csv-dir DIR]\n", argv[0]);
+    return 2;
+  }
+  const bench::WornHistory w = bench::read_worn_history(argv[1]);
+  Config c = w.config;
+  std::string model = c.model.charge, csv_dir;
+  double revs = c.forecast.revolutions_per_drive;
+  int every = 1;
+  std::vector<int> only, blend;
+  for (int i = 2; i + 1 < argc; i += 2) {
+    const std::string k = argv[i], v = argv[i + 1];
+    if (k == "--model") model = v;
+    else if (k == "--variant") c.model.variant = v;
+    else if (k == "--revs") revs = std::stod(v);
+    else if (k == "--every") every = std::stoi(v);
+    else if (k == "--only") only = parse_ints(v);
+    else if (k == "--blend") blend = parse_ints(v);
+    else if (k == "--csv-dir") csv_dir = v;
+    else {
+      std::fprintf(stderr, "unknown option %s\n", k.c_str());
+      return 2;
+    }
+  }
+  const double R = c.mill.shell_radius_m();
+  const int S = c.liner.segments;
+  struct Job {
+    std::string label;
+    std::vector<Eigen::Vector2d> profile;
+  };
+  std::vector<Job> jobs;
+  if (blend.size() == 3) {
+    for (int q = 0; q <= blend[2]; ++q) {
+      const double t = static_cast<double>(q) / blend[2];
+      jobs.push_back({fmt::format("{:.3f}", t),
+                      bench::blend_profiles(w.profiles.at(blend[0]), w.profiles.at(blend[1]), t, S)});
+    }
+  } else {
+    for (size_t k = 0; k < w.profiles.size(); ++k) {
+      const bool take = only.empty() ? k % every == 0 || k + 1 == w.profiles.size()
+                                     : std::find(only.begin(), only.end(), static_cast<int>(k)) != only.end();
+      if (take) jobs.push_back({fmt::format("{:.0f}", w.hours[k]), w.profiles[k]});
+    }
+  }
+  fmt::print("# {} variant {} revs {} on {} ({} profiles)\n", model, c.model.variant, revs, argv[1], jobs.size());
+  fmt::print("hours\tlifter_m\tlead_deg\tD_eff_m\tr_i_m\ttoe\tshoulder\tcom_deg\tcom_r\tlayers\ttraj\tnet_kW\talt_kW\t"
+             "open\twall_s\n");
+  for (const Job& j : jobs) {
+    const LinerSurface s = bench::ring_of(R, S, j.profile);
+    const SegmentMetrics m = segment_metrics(s, 0, c.mill.rotation, 7800.0);
+    if (!csv_dir.empty()) {
+      const auto xy = segment_to_profile_xy(j.profile, R, 0.0, 2 * M_PI / S);
+      std::FILE* f = std::fopen(fmt::format("{}/profile_{}.csv", csv_dir, j.label).c_str(), "w");
+      if (f) {
+        fmt::print(f, "# segment profile at {} ({}), lifter {:.4f} m, leading face {:.2f} deg\nx_m,y_m\n", j.label,
+                   argv[1], m.lifter_height_m, m.face_angle_leading_deg);
+        for (const auto& p : xy) fmt::print(f, "{:.6f},{:.6f}\n", p.x(), p.y());
+        std::fclose(f);
+      }
+    }
+    ChargeInput in;
+    in.mill = c.mill;
+    in.charge = c.charge;
+    in.model = c.model;
+    in.model.charge = model;
+    in.surface = &s;
+    in.revolutions = revs;
+    in.seed = 1;
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+      const ChargeResult r = find_charge_model(model).make()->run(in);
+      const Indicators& I = r.indicators;
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      fmt::print("{}\t{:.4f}\t{:.2f}\t{:.4f}\t{:.3f}\t{:.1f}\t{:.1f}\t{:.1f}\t{:.3f}\t{}\t{}\t{:.0f}\t{:.0f}\t{}\t{:.2f}\n",
+                 j.label, m.lifter_height_m, m.face_angle_leading_deg, I.diameter_eff_m, I.inner_radius_m, I.toe_deg,
+                 I.shoulder_deg, I.com_angle_deg, I.com_radius_m, I.n_layers, I.n_trajectories, I.net_power_kw,
+                 I.alt_net_power_kw, I.layer_speed_rpm.size(), wall);
+    } catch (const std::exception& e) {
+      fmt::print("{}\t{:.4f}\t{:.2f}\tFAILED: {}\n", j.label, m.lifter_height_m, m.face_angle_leading_deg, e.what());
+    }
+    std::fflush(stdout);
+  }
+  return 0;
+}

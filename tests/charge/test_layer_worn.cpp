@@ -1,0 +1,116 @@
+// The layer model on worn liners (docs/models/layer-worn.md): the indicators
+// must follow the geometry continuously, and a worn lifter must lower the
+// shoulder. Profiles: parametric sweeps and blends between the new Qiu lifter
+// and one worn by a forecast (tests/charge/data/qiu_worn_*.csv).
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "bench/worn_profiles.h"
+#include "fixtures.h"
+#include "geometry/measured_profile.h"
+#include "geometry/metrics.h"
+
+using namespace linerlife;
+using namespace linerlife::test;
+
+namespace {
+
+struct Point {
+  double h, face, power, toe, shoulder;
+};
+
+Point run_on(const Config& c, const LinerSurface& s, double revolutions) {
+  const ChargeResult r = run_model("layer", charge_input(c, s, revolutions));
+  const SegmentMetrics m = segment_metrics(s, 0, c.mill.rotation, 7800.0);
+  return {m.lifter_height_m, m.face_angle_leading_deg, r.indicators.net_power_kw, r.indicators.toe_deg,
+          r.indicators.shoulder_deg};
+}
+
+std::vector<Eigen::Vector2d> worn_segment(const Config& c, const std::string& name) {
+  const MeasuredProfile p = load_profile_csv(std::string(LINERLIFE_SOURCE_DIR) + "/tests/charge/data/" + name);
+  return measured_profile_to_segment(p, c.mill.shell_radius_m(), c.liner.segments, c.liner.element_size_m);
+}
+
+// Bounds per step (docs/models/layer-worn.md §Tests). A step here is 1/8 of
+// the whole wear range (about 1.5 cm of lifter height and 4 deg of face angle,
+// some 1000 h of the Qiu forecast). Morrell's C-model moves power by about 1 %
+// and the shoulder by about 1 deg for such a step; the bounds leave room for
+// the sampling noise of short runs (8 revolutions: about +-3 % and +-3 deg)
+// but not for a regime jump (before the fix: +23 % and -30 % in one step,
+// shoulder -20 deg).
+constexpr double kPowerStep = 0.10;    // [-] relative
+constexpr double kAngleStep = 8.0;     // [deg] toe and shoulder
+
+void check_steps(const std::vector<Point>& pts) {
+  for (size_t i = 1; i < pts.size(); ++i) {
+    const Point &a = pts[i - 1], &b = pts[i];
+    INFO("step " << i << ": h " << a.h << " -> " << b.h << " m, face " << a.face << " -> " << b.face
+                 << " deg; power " << a.power << " -> " << b.power << " kW, toe " << a.toe << " -> " << b.toe
+                 << ", shoulder " << a.shoulder << " -> " << b.shoulder);
+    CHECK(std::abs(b.power / a.power - 1.0) < kPowerStep);
+    CHECK(angle_diff(a.toe, b.toe) < kAngleStep);
+    CHECK(angle_diff(a.shoulder, b.shoulder) < kAngleStep);
+  }
+}
+
+}  // namespace
+
+// KNOWN TO FAIL, hidden from the default run ([.], docs/models/layer-worn.md §Left; run with
+// `test_charge "[known-issue]"`): no regime jump
+// is left, but the power still rises 10-18 % and the toe 10-14 deg per step
+// over the first half of the wear (Morrell's r_i deepens the v1.2 bed as the
+// McIvor shoulder drops, and the bed moves towards the rising side). Remove
+// the tag when that is fixed.
+TEST_CASE("layer model: indicators change continuously along a blend from the new to a worn lifter",
+          "[.][charge][layer][worn][known-issue]") {
+  const Config c = load_default_config();
+  const LinerSurface s_new = build_liner_surface(c.mill, c.liner);
+  const auto a = bench::segment0_profile(s_new);
+  const auto b = worn_segment(c, "qiu_worn_8659h.csv");
+  std::vector<Point> pts;
+  for (int q = 0; q <= 8; ++q) {
+    const LinerSurface s = bench::ring_of(c.mill.shell_radius_m(), c.liner.segments,
+                                          bench::blend_profiles(a, b, q / 8.0, c.liner.segments));
+    pts.push_back(run_on(c, s, 8));
+  }
+  REQUIRE(pts.front().h > 0.24);
+  REQUIRE(pts.back().face > 50);
+  check_steps(pts);
+}
+
+// KNOWN TO FAIL, hidden ([.]): as above.
+TEST_CASE("layer model: indicators change continuously as a parametric lifter wears",
+          "[.][charge][layer][worn][known-issue]") {
+  // lifter height 0.25 -> 0.13 m (through h = d = 0.133 m, where the second
+  // layer stops being held), leading face 20 -> 55 deg and top 0.15 -> 0.05 m together
+  Config c = load_default_config();
+  std::vector<Point> pts;
+  for (int q = 0; q <= 8; ++q) {
+    const double t = q / 8.0;
+    c.liner.design.lifter_height_m = 0.25 + t * (0.13 - 0.25);
+    c.liner.design.face_angle_leading_deg = 20.0 + t * (55.0 - 20.0);
+    c.liner.design.top_width_m = 0.15 + t * (0.05 - 0.15);  // the crest wears too (the base must fit the segment)
+    const LinerSurface s = build_liner_surface(c.mill, c.liner);
+    pts.push_back(run_on(c, s, 8));
+  }
+  check_steps(pts);
+}
+
+TEST_CASE("layer model: a worn profile lowers the shoulder", "[charge][layer][worn]") {
+  const Config c = load_default_config();
+  const LinerSurface s_new = build_liner_surface(c.mill, c.liner);
+  const double R = c.mill.shell_radius_m();
+  const LinerSurface s_mid = bench::ring_of(R, c.liner.segments, worn_segment(c, "qiu_worn_4400h.csv"));
+  const LinerSurface s_end = bench::ring_of(R, c.liner.segments, worn_segment(c, "qiu_worn_8659h.csv"));
+  const Point p_new = run_on(c, s_new, 8), p_mid = run_on(c, s_mid, 8), p_end = run_on(c, s_end, 8);
+  INFO("shoulder new " << p_new.shoulder << ", 4400 h " << p_mid.shoulder << ", 8659 h " << p_end.shoulder);
+  CHECK(p_mid.shoulder < p_new.shoulder - 5.0);
+  CHECK(p_end.shoulder < p_mid.shoulder - 5.0);
+  // the charge still rises above the horizontal on the rising side (before the
+  // fix the worn lifter let the whole bed go below it: shoulder about -1 deg)
+  CHECK(p_end.shoulder > 10.0);
+  CHECK(p_end.shoulder < 90.0);
+}
