@@ -1296,6 +1296,11 @@ void LayerSim::relax_surface(double tau) {
   window_extreme(col_, relax_reach_, false, colmin_);
   for (int s = 0; s < S0; ++s) relax_cur_[s] = relax_candidate(s, tau);
   auto mark = [&](int c) {
+    if (2 * relax_reach_ + 1 >= S0) {  // the reach covers the ring
+      std::fill(relax_cur_.begin(), relax_cur_.end(), 1);
+      std::fill(relax_next_.begin(), relax_next_.end(), 1);
+      return;
+    }
     for (int o = -relax_reach_; o <= relax_reach_; ++o) {
       int i = c + o;
       if (i < 0) i += S0;
@@ -1776,8 +1781,11 @@ ChargeResult LayerSim::run() {
   maps_ready_ = true;
   r_open_min_ = R_eff_ - n_open_ * d_;
   // roll_target() looks one cell of the top's layer to each side and one
-  // diameter below it; a cell of layer k spans S_0 / S_k outer cells
-  relax_reach_ = static_cast<int>(std::ceil(3.0 * L_[0].S / L_[n_open_ - 1].S)) + 1;
+  // diameter below it; a cell of layer k spans S_0 / S_k outer cells. The
+  // partial layer of version 1.2 may have only a few wide cells, so the reach
+  // can exceed half the ring: it is then the whole ring (relax_surface()
+  // marks each column once).
+  relax_reach_ = std::min(static_cast<int>(std::ceil(3.0 * L_[0].S / L_[n_open_ - 1].S)) + 1, L_[0].S / 2);
   cos0_.resize(L_[0].S);
   sin0_.resize(L_[0].S);
   for (int s = 0; s < L_[0].S; ++s) {
