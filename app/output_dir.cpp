@@ -1,10 +1,13 @@
 #include "app/output_dir.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
 #include <fmt/format.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include "geometry/errors.h"
@@ -34,6 +37,17 @@ void OutputDir::prepare() {
   std::error_code ec;
   fs::create_directories(dir_, ec);
   if (ec) throw InputError(dir_, fmt::format("output folder {} cannot be created: {}", dir_, ec.message()));
+  // a run killed while writing (SIGKILL, power loss) leaves its temporary;
+  // the finished files it would have replaced are intact
+  for (const auto& e : fs::directory_iterator(dir_, ec)) {
+    const std::string n = e.path().filename().string();
+    const auto at = n.rfind(".tmp.");
+    if (n.empty() || n[0] != '.' || at == std::string::npos) continue;
+    char* end = nullptr;
+    const long pid = std::strtol(n.c_str() + at + 5, &end, 10);
+    if (pid <= 0 || *end != '\0' || pid == static_cast<long>(getpid())) continue;
+    if (kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) fs::remove(e.path(), ec);
+  }
 }
 
 std::string OutputDir::path(const std::string& name) const { return (fs::path(dir_) / name).string(); }

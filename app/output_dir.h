@@ -13,7 +13,9 @@ class OutputDir {
  public:
   explicit OutputDir(std::string dir) : dir_(std::move(dir)) {}
   /// Creates the folder (and parents) and checks it can be written; throws
-  /// InputError naming the folder when it cannot.
+  /// InputError naming the folder when it cannot. Removes the temporaries
+  /// (".name.tmp.PID") a killed earlier run left behind, those of processes
+  /// no longer alive.
   void prepare();
   /// A temporary path in the folder for the file `name` (".name.tmp.PID").
   std::string temp_path(const std::string& name) const;

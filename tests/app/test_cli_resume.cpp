@@ -1,0 +1,148 @@
+// Issue 7 §1: a forecast killed with SIGKILL at any moment and continued with
+// --resume ends with the same results as the uninterrupted run, and never
+// leaves a half-written results or checkpoint file behind.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <regex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "app/h5_reader.h"
+#include "cli_runner.h"
+#include "tests/app/json_lite.h"
+
+using namespace linerlife;
+using namespace linerlife::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The bundled Qiu mill shortened as in test_cli_forecast.cpp, checkpointing
+/// after every charge drive so that a kill lands between checkpoints as well
+/// as during one.
+std::string resumable_qiu() {
+  std::string t = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/qiu2001_sag.toml");
+  t = std::regex_replace(t, std::regex("element_size_m = 0.01\n"), "element_size_m = 0.02\n");
+  t = std::regex_replace(t, std::regex("min_lifter_height_m = 0.075\n"), "min_lifter_height_m = 0.2\n");
+  t = std::regex_replace(t, std::regex("\\[forecast\\]\n"),
+                         "[forecast]\nrevolutions_per_drive = 2\nrefresh_tol_m = 0.01\ncheckpoint_interval_s = 0\n");
+  return t;
+}
+
+/// Starts `linerlife ARGS...` with its output to files in dir; returns the pid.
+pid_t spawn(const std::vector<std::string>& args, const fs::path& dir) {
+  std::fflush(stdout);  // the child must not write out the parent's buffers
+  std::fflush(stderr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const std::string out = (dir / "stdout.txt").string(), err = (dir / "stderr.txt").string();
+    if (!std::freopen(out.c_str(), "w", stdout) || !std::freopen(err.c_str(), "w", stderr)) _exit(127);
+    std::vector<char*> argv;
+    std::string bin = LINERLIFE_BINARY;
+    argv.push_back(bin.data());
+    std::vector<std::string> a = args;
+    for (std::string& s : a) argv.push_back(s.data());
+    argv.push_back(nullptr);
+    execv(bin.c_str(), argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+int wait_exit(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  return WIFSIGNALED(status) ? -WTERMSIG(status) : -1000;
+}
+
+/// Names in dir that are not finished output: temporaries of an atomic write.
+std::vector<std::string> temporaries(const fs::path& dir) {
+  std::vector<std::string> t;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string n = e.path().filename().string();
+    if (n.find(".tmp") != std::string::npos || n.find(".part") != std::string::npos || n[0] == '.') t.push_back(n);
+  }
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("a forecast killed with SIGKILL at random moments and resumed ends as the uninterrupted run",
+          "[app][cli][forecast][resume]") {
+  const fs::path dir = temp_dir("fc_kill");
+  {
+    std::ofstream f(dir / "m.toml");
+    f << resumable_qiu();
+  }
+  const std::string cfg = (dir / "m.toml").string();
+
+  // the uninterrupted run, timed to place the kills
+  const fs::path whole_dir = dir / "whole";
+  const auto t0 = std::chrono::steady_clock::now();
+  const RunResult whole = run_linerlife("forecast " + cfg + " --json --out " + whole_dir.string());
+  const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  INFO(whole.err);
+  REQUIRE(whole.code == 0);
+  const JsonValue w = parse_json(whole.out);
+  REQUIRE(w["charge_redrives"].num() >= 4);
+
+  std::mt19937 rng(20261201);
+  std::uniform_real_distribution<double> when(0.05, 0.95);
+  for (int trial = 0; trial < 3; ++trial) {
+    const fs::path out = dir / ("killed" + std::to_string(trial));
+    int kills = 0, resumes = 0, code = -1;
+    // kill at random moments until a run gets through; the first attempt is
+    // a fresh start, later ones --resume (which starts afresh when the kill
+    // came before the first checkpoint)
+    for (int attempt = 0; attempt < 12 && code != 0; ++attempt) {
+      std::vector<std::string> args = {"forecast", cfg, "--json", "--out", out.string()};
+      if (attempt > 0) {
+        args.push_back("--resume");
+        ++resumes;
+      }
+      const pid_t pid = spawn(args, dir);
+      if (attempt < 4) {
+        std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(when(rng) * wall_ms));
+        kill(pid, SIGKILL);
+      }
+      code = wait_exit(pid);
+      if (code == -SIGKILL) ++kills;
+      if (code != 0 && fs::exists(out)) {
+        // after a kill: a half-written file can only be a temporary (removed
+        // by the next run); the checkpoint, if any, reads back whole, and a
+        // forecast.h5 (a kill after it was committed) is a complete one
+        INFO("after kill " << kills << ": " << read_file((dir / "stderr.txt").string()));
+        CHECK(code == -SIGKILL);
+        if (fs::exists(out / "checkpoint.h5")) CHECK_NOTHROW(H5Reader((out / "checkpoint.h5").string()));
+        if (fs::exists(out / "forecast.h5")) CHECK(H5Reader((out / "forecast.h5").string()).attr_int("/", "partial") == 0);
+      }
+    }
+    INFO("trial " << trial << ": " << kills << " kills, " << resumes << " resumes; "
+                  << read_file((dir / "stderr.txt").string()));
+    REQUIRE(code == 0);
+    CHECK(kills >= 1);
+    const JsonValue k = parse_json(read_file((dir / "stdout.txt").string()));
+    // identical results: same thread count, same checkpointed state
+    CHECK(k["operating_hours"].num() == w["operating_hours"].num());
+    CHECK(k["criterion"].str() == w["criterion"].str());
+    CHECK(k["relining_date"].str() == w["relining_date"].str());
+    CHECK(k["charge_redrives"].num() == w["charge_redrives"].num());
+    CHECK(k["history"]["hours"].nums() == w["history"]["hours"].nums());
+    CHECK(k["history"]["lifter_height_m"].nums() == w["history"]["lifter_height_m"].nums());
+    CHECK(k["history"]["net_power_kw"].nums() == w["history"]["net_power_kw"].nums());
+    CHECK(fs::exists(out / "forecast.h5"));
+    CHECK_FALSE(fs::exists(out / "checkpoint.h5"));  // removed once the run is complete
+    CHECK(temporaries(out).empty());
+  }
+}
