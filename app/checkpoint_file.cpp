@@ -18,6 +18,7 @@ struct Field {
 constexpr Field kFields[] = {
     {"hours", &LifeRecord::hours},
     {"lifter_height_m", &LifeRecord::lifter_height_m},
+    {"crest_thickness_m", &LifeRecord::crest_thickness_m},
     {"face_angle_leading_deg", &LifeRecord::face_angle_leading_deg},
     {"face_angle_trailing_deg", &LifeRecord::face_angle_trailing_deg},
     {"top_width_m", &LifeRecord::top_width_m},

@@ -109,14 +109,18 @@ int run_forecast_command(const ForecastOptions& o) {
 
   if (o.json) {
     Json hist = Json::object();
-    std::vector<double> h, lh, fa, pw;
+    std::vector<double> h, lh, crest, fa, pw, mass, thin;
     for (const LifeRecord& r : f.history) {
       h.push_back(r.hours);
       lh.push_back(r.lifter_height_m);
+      crest.push_back(r.crest_thickness_m);
       fa.push_back(r.face_angle_leading_deg);
       pw.push_back(r.net_power_kw);
+      mass.push_back(r.liner_mass_kg_per_m);
+      thin.push_back(r.min_thickness_m);
     }
-    hist.set("hours", h).set("lifter_height_m", lh).set("face_angle_leading_deg", fa).set("net_power_kw", pw);
+    hist.set("hours", h).set("lifter_height_m", lh).set("face_angle_leading_deg", fa).set("net_power_kw", pw)
+        .set("crest_thickness_m", crest).set("liner_mass_kg_per_m", mass).set("min_thickness_m", thin);
     Json j = Json::object();
     j.set("config", c.source)
         .set("method", method_name(c.forecast.method))

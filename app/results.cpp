@@ -113,6 +113,7 @@ void write_forecast(H5Writer& h5, const std::string& g, const ForecastResult& f,
   col("hours", "h", [](const LifeRecord& r) { return r.hours; });
   col("calendar_days", "d", [&](const LifeRecord& r) { return spec.calendar.calendar_days_for(r.hours); });
   col("lifter_height_m", "m", [](const LifeRecord& r) { return r.lifter_height_m; });
+  col("crest_thickness_m", "m", [](const LifeRecord& r) { return r.crest_thickness_m; });
   col("face_angle_leading_deg", "deg", [](const LifeRecord& r) { return r.face_angle_leading_deg; });
   col("face_angle_trailing_deg", "deg", [](const LifeRecord& r) { return r.face_angle_trailing_deg; });
   col("top_width_m", "m", [](const LifeRecord& r) { return r.top_width_m; });

@@ -361,6 +361,7 @@ class Life {
     LifeRecord r;
     r.hours = t_s / 3600.0;
     r.lifter_height_m = g.lifter.lifter_height_m;
+    r.crest_thickness_m = g.lifter.max_thickness_m;
     r.face_angle_leading_deg = g.lifter.face_angle_leading_deg;
     r.face_angle_trailing_deg = g.lifter.face_angle_trailing_deg;
     r.top_width_m = g.lifter.top_width_m;

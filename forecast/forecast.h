@@ -33,7 +33,8 @@ struct ForecastInput {
 /// The liner and the charge at one moment of the life.
 struct LifeRecord {
   double hours = 0;                    // [h] operating time
-  double lifter_height_m = 0;          // design-0 lifter (the high one of a hi-lo)
+  double lifter_height_m = 0;          // design-0 lifter (the high one of a hi-lo), above the worn plate
+  double crest_thickness_m = 0;        // its crest above the shell (never rises; the height can, when the plate wears faster)
   double face_angle_leading_deg = 0;
   double face_angle_trailing_deg = 0;
   double top_width_m = 0;

@@ -5,6 +5,7 @@
 #
 #   scripts/setup.sh            # install what is missing, build
 #   LINERLIFE_BUILD_DIR=dir     # build somewhere else
+#   LINERLIFE_CMAKE_ARGS="..."  # more CMake arguments (scripts/sanitize.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -42,7 +43,8 @@ fi
 
 BUILD_DIR="${LINERLIFE_BUILD_DIR:-build}"
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
+# shellcheck disable=SC2086  # LINERLIFE_CMAKE_ARGS is a list of arguments
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release ${LINERLIFE_CMAKE_ARGS:-} >/dev/null
 cmake --build "$BUILD_DIR" -j "$jobs" -- --no-print-directory 2>&1 | grep -Ev '^\[ *[0-9]+%\]|^Consolidate compiler|^Scanning dependencies' || true
 test -x "$BUILD_DIR/app/linerlife" || { echo "linerlife setup: the build failed" >&2; exit 1; }
 echo "linerlife setup: built $BUILD_DIR/app/linerlife"

@@ -25,13 +25,16 @@ inline std::string read_file(const std::string& path) {
   return ss.str();
 }
 
-/// Runs `linerlife ARGS` through the shell (ARGS is shell syntax).
-inline RunResult run_linerlife(const std::string& args) {
+/// Runs `linerlife ARGS` through the shell (ARGS is shell syntax); with
+/// timeout_s > 0 a run still going after that many seconds is killed and
+/// returns code 124 (coreutils' timeout).
+inline RunResult run_linerlife(const std::string& args, int timeout_s = 0) {
   static int counter = 0;
   const std::string err_path = (std::filesystem::temp_directory_path() /
                                 ("linerlife_test_err_" + std::to_string(getpid()) + "_" + std::to_string(counter++)))
                                    .string();
-  const std::string cmd = std::string(LINERLIFE_BINARY) + " " + args + " 2>" + err_path;
+  const std::string cmd = (timeout_s > 0 ? "timeout -k 5 " + std::to_string(timeout_s) + " " : std::string()) +
+                          std::string(LINERLIFE_BINARY) + " " + args + " 2>" + err_path;
   RunResult r;
   FILE* p = popen(cmd.c_str(), "r");
   std::array<char, 4096> buf{};
