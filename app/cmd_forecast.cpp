@@ -75,8 +75,13 @@ int run_forecast_command(const ForecastOptions& o) {
         std::cerr << fmt::format("  no checkpoint in {}: starting from the beginning\n", o.out);
       }
     }
-    dir->prepare();
-    hooks.checkpoint = [&dir, &config_text](const ForecastCheckpoint& cpt) { write_checkpoint(*dir, config_text, cpt); };
+    // the folder is created with the first file written into it, so that input
+    // refused inside the forecast (a liner that already meets a criterion, a
+    // DEM step beyond the stable range) leaves nothing behind
+    hooks.checkpoint = [&dir, &config_text](const ForecastCheckpoint& cpt) {
+      dir->prepare();
+      write_checkpoint(*dir, config_text, cpt);
+    };
   }
   ForecastResult partial;
   hooks.partial = &partial;
@@ -87,6 +92,7 @@ int run_forecast_command(const ForecastOptions& o) {
     if (hooks.progress) std::fprintf(stderr, "\n");
     // the results so far, marked partial; the checkpoint stays for a look
     if (dir && !partial.history.empty()) {
+      dir->prepare();
       const std::string tmp = dir->temp_path("forecast.h5");
       {
         H5Writer h5(tmp);
@@ -175,6 +181,7 @@ int run_forecast_command(const ForecastOptions& o) {
   }
 
   if (dir) {
+    dir->prepare();
     const std::string tmp = dir->temp_path("forecast.h5");
     {
       H5Writer h5(tmp);

@@ -3,6 +3,7 @@
 // 3 simulation failure, 1 internal error.
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -24,6 +25,20 @@ int main(int argc, char** argv) {
   std::function<int()> run;
   for (RegisterCommand reg : commands) reg(app, run);
 
+  // an unknown command is named (CLI11 would only say one is required)
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string names;
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+      known = known || sub->get_name() == argv[1];
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!known) {
+      std::cerr << "linerlife: error: unknown command \"" << argv[1] << "\"; the commands are " << names
+                << "\n(run `linerlife --help` for the commands and options)\n";
+      return kExitInput;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

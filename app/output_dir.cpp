@@ -33,6 +33,7 @@ void check_output_dir_writable(const std::string& dir) {
 }
 
 void OutputDir::prepare() {
+  if (prepared_) return;
   check_output_dir_writable(dir_);
   std::error_code ec;
   fs::create_directories(dir_, ec);
@@ -48,6 +49,7 @@ void OutputDir::prepare() {
     if (pid <= 0 || *end != '\0' || pid == static_cast<long>(getpid())) continue;
     if (kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) fs::remove(e.path(), ec);
   }
+  prepared_ = true;
 }
 
 std::string OutputDir::path(const std::string& name) const { return (fs::path(dir_) / name).string(); }

@@ -15,7 +15,7 @@ class OutputDir {
   /// Creates the folder (and parents) and checks it can be written; throws
   /// InputError naming the folder when it cannot. Removes the temporaries
   /// (".name.tmp.PID") a killed earlier run left behind, those of processes
-  /// no longer alive.
+  /// no longer alive. Once done, further calls return at once.
   void prepare();
   /// A temporary path in the folder for the file `name` (".name.tmp.PID").
   std::string temp_path(const std::string& name) const;
@@ -28,6 +28,7 @@ class OutputDir {
 
  private:
   std::string dir_;
+  bool prepared_ = false;
 };
 
 /// Checks before any work starts that `dir` could be created and written

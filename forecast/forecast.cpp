@@ -739,7 +739,36 @@ void Life::run_explicit(double dt_s, double revolutions, bool remesh_every_step)
         }
       }
     if (first >= 0) {
+      // Linear interpolation of the criteria is only a first guess: on a long
+      // step (amplify, a coarse Euler step) the displaced ring folds and the
+      // criteria are far from linear in the step fraction. The crossing is
+      // bracketed by [0, 1] (all criteria positive at 0, one not at 1) and
+      // located by bisection to 1e-6 of the step, so the end state meets the
+      // criterion it is reported for.
+      auto first_crossed = [&](double f, int& which) {
+        std::vector<double> yf(y_);
+        for (int i = 0; i < cell_.size(); ++i) yf[i] += f * r_now_[i] * dt_s;
+        double g[4];
+        crit_.eval(gauge(cell_.displaced(yf.data()), cell_.period(), in_.rotation, in_.density_kg_m3), g);
+        which = -1;
+        for (int i = 0; i < 4; ++i)
+          if (g[i] <= 0 && (which < 0 || g[i] < g[which])) which = i;
+        return which >= 0;
+      };
+      double lo = 0, hi = 1;
+      int w = -1;
+      if (first_crossed(frac_first, w)) hi = frac_first, first = w;
+      else lo = frac_first;
+      while (hi - lo > 1e-6) {
+        const double mid = 0.5 * (lo + hi);
+        if (first_crossed(mid, w)) hi = mid, first = w;
+        else lo = mid;
+      }
+      frac_first = hi;
       for (int i = 0; i < cell_.size(); ++i) y_[i] += frac_first * r_now_[i] * dt_s;
+      // the final profile as a remesh makes it: on a long step the displaced
+      // ring folds, and the loops are material that the step wore away
+      do_remesh();
       finish(t_ + frac_first * dt_s, Criteria::name(first), true);
       return;
     }

@@ -1,0 +1,326 @@
+// The bad-input catalogue from the command line (issue 7 §4, docs/reliability.md):
+// the classes that had no CLI-level test yet. Every case exits 2 before any
+// work, names the file (and line) or the option and the value, and leaves no
+// output behind. Each run is a refusal (about 0.1 s); no forecast is run.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "cli_runner.h"
+
+using namespace linerlife::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream f(p);
+  f << text;
+}
+
+/// The annotated default configuration with the line starting `old_line`
+/// replaced by `new_line` (the line must exist).
+std::string defaults_with(const std::string& old_line, const std::string& new_line) {
+  static const std::string base = run_linerlife("defaults").out;
+  std::string t = base;
+  const auto pos = t.find("\n" + old_line);
+  REQUIRE(pos != std::string::npos);
+  t.replace(pos + 1, t.find('\n', pos + 1) - pos - 1, new_line);
+  return t;
+}
+
+/// A permission test needs a user the permissions apply to: as root, the run
+/// goes through setpriv as nobody; returns false when that is not possible.
+bool can_drop_privileges() {
+  if (geteuid() != 0) return true;
+  const int rc = std::system(("cd / && setpriv --reuid=65534 --regid=65534 --clear-groups " +
+                              std::string(LINERLIFE_BINARY) + " --version >/dev/null 2>&1")
+                                 .c_str());
+  return rc == 0;
+}
+
+/// Lets the unprivileged user into a test folder whatever the umask.
+void open_to_all(const fs::path& dir) {
+  using fs::perms;
+  fs::permissions(dir, perms::owner_all | perms::group_read | perms::group_exec | perms::others_read |
+                           perms::others_exec);
+}
+
+/// run_linerlife as a user without root's licence to ignore file permissions.
+RunResult run_unprivileged(const std::string& args) {
+  if (geteuid() != 0) return run_linerlife(args);
+  const fs::path err = fs::temp_directory_path() / ("linerlife_test_unpriv_" + std::to_string(getpid()));
+  const std::string cmd = "cd / && setpriv --reuid=65534 --regid=65534 --clear-groups " +
+                          std::string(LINERLIFE_BINARY) + " " + args + " 2>" + err.string();
+  RunResult r;
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = read_file(err.string());
+  fs::remove(err);
+  return r;
+}
+
+/// One refusal: the arguments, and fragments the message must hold.
+struct Refusal {
+  std::string args;
+  std::vector<std::string> says;
+};
+
+void check_refused(const RunResult& r, const Refusal& c, const fs::path& out) {
+  INFO(c.args << "\n" << r.err);
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::StartsWith("linerlife: error: "));
+  for (const auto& s : c.says) CHECK_THAT(r.err, Catch::Contains(s));
+  CHECK_FALSE(fs::exists(out));
+}
+
+}  // namespace
+
+TEST_CASE("configuration files that are not valid TOML or cannot be read exit 2 naming the file and line",
+          "[app][cli][input]") {
+  const fs::path dir = temp_dir("bad_config_files");
+  const fs::path out = dir / "out";
+  write(dir / "syntax.toml", "[mill\ndiameter_m = 3\n");
+  write(dir / "utf8.toml", std::string("\x00\x01\xff\xfe", 4));
+  write(dir / "dup.toml", defaults_with("diameter_m = ", "diameter_m = 10.36\ndiameter_m = 10.0"));
+  write(dir / "huge.toml", defaults_with("segments = ", "segments = 99999999999999999999"));
+  write(dir / "section.toml", defaults_with("diameter_m = ", "diameter_m = 10.36") + "\n[milling]\nx = 1\n");
+  write(dir / "toplevel.toml", "diameter_m = 3\n" + defaults_with("diameter_m = ", "diameter_m = 10.36"));
+  write(dir / "empty.toml", "");
+  write(dir / "nan.toml", defaults_with("diameter_m = ", "diameter_m = nan"));
+  write(dir / "overflow.toml", defaults_with("diameter_m = ", "diameter_m = 1e309"));
+  const std::vector<Refusal> cases = {
+      {"syntax.toml", {"syntax.toml:1: TOML syntax error", "expected ']'"}},
+      {"utf8.toml", {"utf8.toml:1: TOML syntax error", "utf-8"}},
+      {"dup.toml", {"dup.toml:10: TOML syntax error", "cannot redefine", "diameter_m"}},
+      {"huge.toml", {"huge.toml:45: TOML syntax error", "99999999999999999999", "not representable"}},
+      {"section.toml", {"unknown section or top-level key \"milling\"", "[mill], [charge]"}},
+      {"toplevel.toml", {"toplevel.toml:1: unknown section or top-level key \"diameter_m\""}},
+      {"empty.toml", {"empty.toml: missing required key [mill] diameter_m", "0.1 < value <= 15 m"}},
+      {"nan.toml", {"nan.toml:9: [mill] diameter_m = nan: out of range"}},
+      {"overflow.toml", {"overflow.toml:9: TOML syntax error", "'1e309' could not be interpreted"}},
+  };
+  for (const Refusal& c : cases)
+    check_refused(run_linerlife("geometry " + (dir / c.args).string() + " --out " + out.string()), c, out);
+
+  // a file the user may not read
+  if (!can_drop_privileges()) {
+    WARN("running as root without setpriv: the unreadable-file case is not checked");
+  } else {
+    open_to_all(dir);
+    write(dir / "unread.toml", defaults_with("diameter_m = ", "diameter_m = 10.36"));
+    fs::permissions(dir / "unread.toml", fs::perms::none);
+    const Refusal c{"unread.toml", {"configuration file", "unread.toml cannot be read (permissions?)"}};
+    check_refused(run_unprivileged("geometry " + (dir / "unread.toml").string()), c, out);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("measured profile files given to calibrate exit 2 naming the file, line and value", "[app][cli][input]") {
+  const fs::path dir = temp_dir("bad_scans");
+  const fs::path out = dir / "cal";
+  const std::string head = "hours,x_m,y_m\n";
+  write(dir / "empty.csv", "");
+  write(dir / "header.csv", head);
+  write(dir / "text.csv", head + "1000,0,0.07\n1000,abc,0.07\n1000,0.5,0.07\n");
+  write(dir / "nan.csv", head + "1000,0,0.075\n1000,0.25,nan\n1000,0.508618,0.075\n");
+  write(dir / "spaces.csv", "hours x_m y_m\n1000 0 0.075\n");
+  write(dir / "crossing.csv", head + "1000,0,0.075\n1000,0.3,0.3\n1000,0.1,0.3\n1000,0.2,0.01\n1000,0.508618,0.075\n");
+  write(dir / "outside.csv", head + "1000,0,0.075\n1000,0.25,-0.01\n1000,0.508618,0.075\n");
+  write(dir / "wide.csv", head + "1000,0,0.075\n1000,0.25,0.3\n1000,0.9,0.075\n");
+  write(dir / "unsorted.csv", head + "1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n"
+                                     "500,0,0.075\n500,0.25,0.3\n500,0.508618,0.075\n");
+  write(dir / "negative.csv", head + "-5,0,0.075\n-5,0.25,0.3\n-5,0.508618,0.075\n");
+  write(dir / "two.csv", head + "1000,0,0.075\n1000,0.25,0.3\n");
+  const std::vector<Refusal> cases = {
+      {"empty.csv", {"empty.csv: no measured profile in the file"}},
+      {"header.csv", {"header.csv: no measured profile in the file"}},
+      {"text.csv", {"text.csv:3:", "\"1000,abc,0.07\""}},
+      {"nan.csv", {"nan.csv:3:", "\"1000,0.25,nan\""}},
+      {"spaces.csv", {"spaces.csv:1:", "expected three numbers \"hours,x_m,y_m\""}},
+      {"crossing.csv", {"crossing.csv:2 (profile at 1000 h)", "crosses itself"}},
+      {"outside.csv", {"outside.csv:2 (profile at 1000 h)", "y = -0.01 m", "inside the shell"}},
+      {"wide.csv", {"wide.csv:2 (profile at 1000 h)", "segment width", "0.9000 m"}},
+      {"unsorted.csv", {"unsorted.csv:5: hours = 500 after a profile at 1000 h", "increasing hours"}},
+      {"negative.csv", {"negative.csv:2: hours = -5", "must be >= 0"}},
+      {"two.csv", {"two.csv:2:", "has 2 points; at least 3"}},
+      {"missing.csv", {"measured profile file", "missing.csv does not exist"}},
+  };
+  for (const Refusal& c : cases)
+    check_refused(run_linerlife("calibrate --measured " + (dir / c.args).string() + " --out " + out.string()), c, out);
+  fs::create_directories(dir / "folder.csv");
+  check_refused(run_linerlife("calibrate --measured " + (dir / "folder.csv").string() + " --out " + out.string()),
+                {"folder.csv", {"folder.csv is a directory"}}, out);
+
+  if (!can_drop_privileges()) {
+    WARN("running as root without setpriv: the unreadable-file case is not checked");
+  } else {
+    open_to_all(dir);
+    write(dir / "unread.csv", head + "1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n");
+    fs::permissions(dir / "unread.csv", fs::perms::none);
+    check_refused(run_unprivileged("calibrate --measured " + (dir / "unread.csv").string()),
+                  {"unread.csv", {"measured profile file", "unread.csv cannot be read"}}, out);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[app][cli][input]") {
+  const fs::path dir = temp_dir("bad_usage");
+  const fs::path out = dir / "out";
+  const std::string o = " --out " + out.string();
+  write(dir / "ok.csv", "hours,x_m,y_m\n1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n");
+  write(dir / "a.toml", defaults_with("diameter_m = ", "diameter_m = 10.36"));
+  const std::string csv = (dir / "ok.csv").string(), toml = (dir / "a.toml").string();
+  const std::vector<Refusal> cases = {
+      {"forecast --resume --quiet", {"--resume", "give --out"}},
+      {"forecast --method rk4" + o, {"--method: rk4 not in {ode,amplify,euler}"}},
+      {"forecast --out", {"--out", "required"}},
+      {"geometry --resume" + o, {"not expected: --resume"}},
+      {"geometry " + toml + " " + toml + o, {"not expected: " + toml}},
+      {"calibrate" + o, {"calibrate needs --measured"}},
+      {"calibrate --measured " + csv + " --fit bogus" + o, {"--fit bogus", "abrasion,impact"}},
+      {"compare" + o, {"compare needs two or more configurations"}},
+      {"compare --vary foo" + o, {"--vary foo", "KEY=v1,v2"}},
+      {"compare --vary liner.bogus=1,2" + o, {"unknown configuration key [liner] bogus"}},
+      {"plot" + o, {"RESULTS is required"}},
+      {"plot " + (dir / "missing.h5").string() + o, {"results file", "missing.h5 does not exist"}},
+      {"plot " + toml + o, {"a.toml is not a readable HDF5 file"}},
+      {"frobnicate" + o, {"--help"}},
+  };
+  for (const Refusal& c : cases) check_refused(run_linerlife(c.args), c, out);
+  // an unknown command is named, with the list of commands
+  const RunResult r = run_linerlife("frobnicate");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("unknown command \"frobnicate\""));
+  CHECK_THAT(r.err, Catch::Contains("forecast"));
+  fs::remove_all(dir);
+}
+
+namespace {
+
+struct StartCase {
+  std::string old_line, new_line, criterion;
+};
+
+/// Criteria the new liner of the bundled mill (lifter 0.25 m, plate 0.075 m,
+/// leading face 20 deg) already meets.
+const std::vector<StartCase>& met_at_start() {
+  static const std::vector<StartCase> cases = {
+      {"min_lifter_height_m = ", "min_lifter_height_m = 0.3", "min_lifter_height"},
+      {"min_plate_thickness_m = ", "min_plate_thickness_m = 0.08", "min_plate_thickness"},
+      {"max_face_angle_leading_deg = ", "max_face_angle_leading_deg = 15.0", "max_face_angle_leading"},
+  };
+  return cases;
+}
+
+}  // namespace
+
+TEST_CASE("a forecast whose new liner already meets a relining criterion is refused before any work",
+          "[app][cli][input]") {
+  const fs::path dir = temp_dir("bad_start");
+  const fs::path out = dir / "out";
+  for (const StartCase& c : met_at_start()) {
+    write(dir / "start.toml", defaults_with(c.old_line, c.new_line));
+    for (const std::string extra : {"", " --resume"}) {
+      const RunResult r =
+          run_linerlife("forecast " + (dir / "start.toml").string() + " --quiet --out " + out.string() + extra, 30);
+      INFO(c.new_line << extra << "\n" << r.err);
+      CHECK(r.code == 2);
+      CHECK_THAT(r.err, Catch::StartsWith("linerlife: error: "));
+      CHECK_THAT(r.err, Catch::Contains("already meets the relining criterion " + c.criterion + " at the start"));
+      CHECK_THAT(r.err, Catch::Contains("lifter height 0.2500 m, thinnest point 0.0750 m, leading face 20.00 deg"));
+      CHECK_THAT(r.err, Catch::Contains("[forecast]"));
+      if (fs::exists(out)) CHECK(fs::is_empty(out));  // no results, no checkpoint
+      fs::remove_all(out);
+    }
+  }
+  fs::remove_all(dir);
+}
+
+// Refusals found when the forecast is set up come before the --out folder is
+// made (it is created with the first file written into it).
+TEST_CASE("a forecast refused at setup leaves no output folder", "[app][cli][input]") {
+  const fs::path dir = temp_dir("bad_start_folder");
+  const fs::path out = dir / "out";
+  std::vector<std::string> configs;
+  for (const StartCase& c : met_at_start()) configs.push_back(defaults_with(c.old_line, c.new_line));
+  // a DEM time step beyond the stable range, refused when the charge model is set up
+  std::string dem = defaults_with("charge = \"layer\"", "charge = \"dem\"");
+  dem.insert(dem.find("\n[dem]\n") + 7, "time_step_s = 0.01\n");
+  configs.push_back(dem);
+  for (const std::string& text : configs) {
+    write(dir / "bad.toml", text);
+    const RunResult r = run_linerlife("forecast " + (dir / "bad.toml").string() + " --quiet --out " + out.string(), 30);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK_FALSE(fs::exists(out));
+    fs::remove_all(out);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("an output folder that cannot be written, or a checkpoint that is not one, is refused before any work",
+          "[app][cli][input]") {
+  const fs::path dir = temp_dir("bad_out");
+  // --out names an existing file: refused, and the file is left as it was
+  write(dir / "afile", "x");
+  RunResult r = run_linerlife("geometry --out " + (dir / "afile").string());
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("output folder " + (dir / "afile").string() + " exists and is not a folder"));
+  CHECK(read_file((dir / "afile").string()) == "x");
+
+  // a folder without write permission, and a folder inside one, for each command that writes
+  if (!can_drop_privileges()) {
+    WARN("running as root without setpriv: the read-only folder cases are not checked");
+  } else {
+    open_to_all(dir);
+    const fs::path ro = dir / "readonly";
+    fs::create_directories(ro);
+    fs::permissions(ro, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                            fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+    r = run_unprivileged("geometry --out " + ro.string());
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("output folder " + ro.string() + " cannot be written (permissions)"));
+    write(dir / "ok.csv", "hours,x_m,y_m\n1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n");
+    const std::vector<std::string> writers = {"geometry", "charge", "wear", "forecast --quiet",
+                                              "calibrate --measured " + (dir / "ok.csv").string()};
+    for (const std::string& cmd : writers) {
+      r = run_unprivileged(cmd + " --out " + (ro / "sub").string());
+      INFO(cmd << ": " << r.err);
+      CHECK(r.code == 2);
+      CHECK_THAT(r.err, Catch::Contains("output folder " + (ro / "sub").string() + " cannot be created: " +
+                                        ro.string() + " is not writable"));
+    }
+    CHECK(fs::is_empty(ro));
+    fs::permissions(ro, fs::perms::owner_all, fs::perm_options::add);
+  }
+
+  // --resume over a checkpoint.h5 that is not HDF5, or HDF5 but not a checkpoint
+  const fs::path cp = dir / "resume";
+  fs::create_directories(cp);
+  write(cp / "checkpoint.h5", "garbage\n");
+  r = run_linerlife("forecast --quiet --out " + cp.string() + " --resume", 30);
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("checkpoint.h5 is not a readable HDF5 file"));
+  REQUIRE(run_linerlife("geometry --out " + (dir / "geo").string()).code == 0);
+  fs::copy_file(dir / "geo" / "geometry.h5", cp / "checkpoint.h5", fs::copy_options::overwrite_existing);
+  r = run_linerlife("forecast --quiet --out " + cp.string() + " --resume", 30);
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("checkpoint.h5 is not a linerlife forecast checkpoint"));
+  // nothing but the checkpoint: no results, no temporaries
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(cp)) names.push_back(e.path().filename().string());
+  CHECK(names == std::vector<std::string>{"checkpoint.h5"});
+  fs::remove_all(dir);
+}
