@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <limits>
 #include <stdexcept>
@@ -523,7 +524,10 @@ void cvode_error_handler(int, const char* module, const char* function, char* ms
 
 void check(int flag, const char* call, double t_s) {
   if (flag >= 0) return;
-  const char* name = CVodeGetReturnFlagName(flag);
+  // CVodeGetReturnFlagName returns a malloc'ed string the caller frees (ASan: leak)
+  char* raw = CVodeGetReturnFlagName(flag);
+  const std::string name = raw ? raw : "?";
+  std::free(raw);
   std::string hint;
   switch (flag) {
     case CV_TOO_MUCH_WORK:
@@ -545,7 +549,7 @@ void check(int flag, const char* call, double t_s) {
   std::string detail = g_cvode_message.empty() ? "" : " (" + g_cvode_message + ")";
   g_cvode_message.clear();
   throw SimulationError(fmt::format("CVODE {} failed with {} at {:.1f} operating hours{}: {}", call,
-                                    name ? name : "?", t_s / 3600.0, detail, hint));
+                                    name, t_s / 3600.0, detail, hint));
 }
 
 template <class T>

@@ -9,6 +9,7 @@
 // forecast is cut down (2 revolutions a drive, 20 mm elements or finer for
 // small lifters, a coarse refresh): a few seconds a run. The fast suite runs
 // 20 of them, the slow one 100; LINERLIFE_SOAK_RUNS sets another count.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -114,8 +115,11 @@ void soak(int runs, unsigned seed) {
       std::ofstream f(cfg);
       f << m.toml;
     }
-    // a hang shows as the timeout's exit code 124 (a run takes about a second)
-    const RunResult r = run_linerlife("forecast " + cfg.string() + " --json --quiet", 120);
+    // a hang shows as the timeout's exit code 124 (a run takes a few seconds;
+    // LINERLIFE_TIMEOUT_SCALE stretches the limit for sanitizer builds)
+    const char* scale = std::getenv("LINERLIFE_TIMEOUT_SCALE");
+    const int limit = static_cast<int>(120 * (scale ? std::max(1.0, std::atof(scale)) : 1.0));
+    const RunResult r = run_linerlife("forecast " + cfg.string() + " --json --quiet", limit);
     INFO("run " << k << ": " << m.summary << "\n" << m.toml << "\n" << r.err);
     REQUIRE(r.code == 0);
     const JsonValue j = parse_json(r.out);
