@@ -63,7 +63,7 @@ void add_forecast_keys(Schema& s) {
                       false, [](Config& c, long long v) { c.forecast.rate_smoothing_passes = static_cast<int>(v); },
                       [](const Config& c) { return static_cast<long long>(c.forecast.rate_smoothing_passes); }, 2));
   K.push_back(real_key("forecast", "revolutions_per_drive", "rev", "Mill revolutions averaged per charge drive", 0.5,
-                       1000.0, false, false, 20.0, [](Config& c, double v) { c.forecast.revolutions_per_drive = v; },
+                       1000.0, false, false, 10.0, [](Config& c, double v) { c.forecast.revolutions_per_drive = v; },
                        [](const Config& c) { return c.forecast.revolutions_per_drive; }));
   K.push_back(real_key("forecast", "remesh_depth_m", "m",
                        "Remesh once a node receded this far (0: half the element size)", 0.0, 0.1, false, false, 0.0,
