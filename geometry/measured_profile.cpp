@@ -130,6 +130,14 @@ void validate_measured_profile(const MeasuredProfile& p, double R, int segments)
     throw InputError(p.source, fmt::format("{}: the first and last thickness differ ({} vs {} m); the profile repeats "
                                            "round the ring, so both ends must match within 1 mm",
                                            p.source, pts.front().y(), pts.back().y()));
+  // A radial step on a segment edge (the next point still on the edge) makes
+  // the ring run back along the edge between two segments; the remesh cannot
+  // keep such an edge simple (fuzz_remesh, corpus remesh-crash-d0914b3b).
+  const size_t n = pts.size();
+  if (pts[1].x() <= tol || pts[n - 2].x() >= width - tol)
+    throw InputError(p.source, fmt::format("{}: point {} lies on the segment edge as well as point {}: a radial step on "
+                                           "the edge is not allowed; move it at least 1 mm into the segment",
+                                           p.source, pts[1].x() <= tol ? 2 : n - 1, pts[1].x() <= tol ? 1 : n));
   if (polyline_self_intersects(pts))
     throw InputError(p.source, fmt::format("{}: the profile crosses itself", p.source));
 }

@@ -67,6 +67,9 @@ TEST_CASE("bad profile files are refused naming the file and the line", "[geomet
   refuse_profile({{0, 0.07}, {0.3, 0.3}, {0.1, 0.3}, {0.2, 0.0001}, {w, 0.07}}, "crosses itself");
   refuse_profile({{0, 0.07}, {0.2, 0.3}, {w, 0.05}}, "both ends must match");
   refuse_profile({{0, 0.07}, {0.6, 0.3}, {w, 0.07}}, "outside its segment");
+  // a radial step on either segment edge (fuzz_remesh findings)
+  refuse_profile({{0, 0.07}, {0, 0.05}, {0.2, 0.3}, {w, 0.07}}, "radial step on the edge");
+  refuse_profile({{0, 0.07}, {0.2, 0.3}, {w, 0.05}, {w, 0.07}}, "radial step on the edge");
 
   namespace fs = std::filesystem;
   CHECK_THROWS_WITH(load_profile_csv("/nonexistent/scan.csv"), Catch::Contains("does not exist"));
