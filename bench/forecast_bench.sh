@@ -18,7 +18,8 @@ for i in $(seq "$REPS"); do
   line=$(printf '%s' "$out" | /usr/bin/python3 -c '
 import json, sys
 d = json.load(sys.stdin)
-print(f"{d[\"wall_s\"]:.2f} {d[\"operating_hours\"]:.0f} {d[\"criterion\"]} {d[\"charge_redrives\"]} {d[\"cvode_steps\"]} {d[\"rhs_evals\"]}")')
+print("%.2f %.0f %s %d %d %d" % (d["wall_s"], d["operating_hours"], d["criterion"], d["charge_redrives"],
+                                 d["cvode_steps"], d["rhs_evals"]))')
   set -- $line
   walls+=("$1")
   echo "run $i: wall $1 s, life $2 h ($3), $4 drives, $5 CVODE steps, $6 rhs; load $(cut -d' ' -f1 /proc/loadavg)"
