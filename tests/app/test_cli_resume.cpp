@@ -113,7 +113,30 @@ TEST_CASE("a forecast killed with SIGKILL at random moments and resumed ends as 
       }
       const pid_t pid = spawn(args, dir);
       if (attempt < 4) {
-        std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(when(rng) * wall_ms));
+        // The moment is set by the run's progress, not the clock alone (a
+        // loaded machine stretches a run): wait for a random number of new
+        // checkpoints (the run writes one after every drive), then a random
+        // fraction of a drive, then kill - unless the run ends first.
+        const int target = std::uniform_int_distribution<int>(0, 6)(rng);
+        const double extra_ms = when(rng) * wall_ms / w["charge_redrives"].num();
+        const fs::path cp = out / "checkpoint.h5";
+        fs::file_time_type last{};
+        int seen = 0;
+        bool ended = false;
+        while (seen < target && !ended) {
+          std::error_code ec;
+          const auto t = fs::last_write_time(cp, ec);
+          if (!ec && t != last) last = t, ++seen;
+          int status = 0;
+          ended = waitpid(pid, &status, WNOHANG) == pid;
+          if (ended) code = WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
+          std::this_thread::sleep_for(std::chrono::microseconds(500));
+        }
+        if (ended) {
+          if (code == 0) break;
+          continue;
+        }
+        std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(extra_ms));
         kill(pid, SIGKILL);
       }
       code = wait_exit(pid);
