@@ -132,7 +132,8 @@ void validate_measured_profile(const MeasuredProfile& p, double R, int segments)
                                            p.source, pts.front().y(), pts.back().y()));
   // A radial step on a segment edge (the next point still on the edge) makes
   // the ring run back along the edge between two segments; the remesh cannot
-  // keep such an edge simple (fuzz_remesh, corpus remesh-crash-d0914b3b).
+  // keep such an edge simple (fuzz_remesh, corpus remesh-crash-f307528c and
+  // remesh-crash-d0914b3b).
   const size_t n = pts.size();
   if (pts[1].x() <= tol || pts[n - 2].x() >= width - tol)
     throw InputError(p.source, fmt::format("{}: point {} lies on the segment edge as well as point {}: a radial step on "

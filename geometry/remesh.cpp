@@ -140,27 +140,6 @@ std::vector<V> remesh_chain(const LinerSurface& s, const std::vector<double>& de
     const double th = th0 + (th1 - th0) * j / narc;
     body.emplace_back(R * std::cos(th), R * std::sin(th));
   }
-  // A profile that starts (or ends) with a radial step on the segment edge -
-  // two nodes on the edge's radial line, the outer one first - runs back
-  // along the closing edge from the shell: a zero-width spike that makes the
-  // polygon non-simple although the body is not (fuzz_remesh, corpus
-  // remesh-crash-f307528c). Spike vertices (antiparallel edges on both
-  // sides) are dropped; the enclosed region is unchanged.
-  for (bool again = true; again && body.size() > 3;) {
-    again = false;
-    for (size_t i = 0; i < body.size() && body.size() > 3; ++i) {
-      const V& p = body[(i + body.size() - 1) % body.size()];
-      const V& q = body[i];
-      const V& r = body[(i + 1) % body.size()];
-      const V u = q - p, w = r - q;
-      const double scale = u.norm() * w.norm();
-      if (scale > 0 && std::abs(u.x() * w.y() - u.y() * w.x()) <= 1e-9 * scale && u.dot(w) < 0) {
-        body.erase(body.begin() + static_cast<long>(i));
-        again = true;
-        break;
-      }
-    }
-  }
   Polygon body_poly;
   for (const V& p : body) body_poly.push_back(to_cgal(p));
   if (!body_poly.is_simple())

@@ -25,6 +25,12 @@ inline std::string read_file(const std::string& path) {
   return ss.str();
 }
 
+/// Writes `text` to `path` (a test's input file).
+inline void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream f(path);
+  f << text;
+}
+
 /// Runs `linerlife ARGS` through the shell (ARGS is shell syntax); with
 /// timeout_s > 0 a run still going after that many seconds is killed and
 /// returns code 124 (coreutils' timeout).

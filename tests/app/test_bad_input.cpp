@@ -20,11 +20,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void write(const fs::path& p, const std::string& text) {
-  std::ofstream f(p);
-  f << text;
-}
-
 /// The annotated default configuration with the line starting `old_line`
 /// replaced by `new_line` (the line must exist).
 std::string defaults_with(const std::string& old_line, const std::string& new_line) {
@@ -91,15 +86,15 @@ TEST_CASE("configuration files that are not valid TOML or cannot be read exit 2 
           "[app][cli][input]") {
   const fs::path dir = temp_dir("bad_config_files");
   const fs::path out = dir / "out";
-  write(dir / "syntax.toml", "[mill\ndiameter_m = 3\n");
-  write(dir / "utf8.toml", std::string("\x00\x01\xff\xfe", 4));
-  write(dir / "dup.toml", defaults_with("diameter_m = ", "diameter_m = 10.36\ndiameter_m = 10.0"));
-  write(dir / "huge.toml", defaults_with("segments = ", "segments = 99999999999999999999"));
-  write(dir / "section.toml", defaults_with("diameter_m = ", "diameter_m = 10.36") + "\n[milling]\nx = 1\n");
-  write(dir / "toplevel.toml", "diameter_m = 3\n" + defaults_with("diameter_m = ", "diameter_m = 10.36"));
-  write(dir / "empty.toml", "");
-  write(dir / "nan.toml", defaults_with("diameter_m = ", "diameter_m = nan"));
-  write(dir / "overflow.toml", defaults_with("diameter_m = ", "diameter_m = 1e309"));
+  write_file(dir / "syntax.toml", "[mill\ndiameter_m = 3\n");
+  write_file(dir / "utf8.toml", std::string("\x00\x01\xff\xfe", 4));
+  write_file(dir / "dup.toml", defaults_with("diameter_m = ", "diameter_m = 10.36\ndiameter_m = 10.0"));
+  write_file(dir / "huge.toml", defaults_with("segments = ", "segments = 99999999999999999999"));
+  write_file(dir / "section.toml", defaults_with("diameter_m = ", "diameter_m = 10.36") + "\n[milling]\nx = 1\n");
+  write_file(dir / "toplevel.toml", "diameter_m = 3\n" + defaults_with("diameter_m = ", "diameter_m = 10.36"));
+  write_file(dir / "empty.toml", "");
+  write_file(dir / "nan.toml", defaults_with("diameter_m = ", "diameter_m = nan"));
+  write_file(dir / "overflow.toml", defaults_with("diameter_m = ", "diameter_m = 1e309"));
   const std::vector<Refusal> cases = {
       {"syntax.toml", {"syntax.toml:1: TOML syntax error", "expected ']'"}},
       {"utf8.toml", {"utf8.toml:1: TOML syntax error", "utf-8"}},
@@ -119,7 +114,7 @@ TEST_CASE("configuration files that are not valid TOML or cannot be read exit 2 
     WARN("running as root without setpriv: the unreadable-file case is not checked");
   } else {
     open_to_all(dir);
-    write(dir / "unread.toml", defaults_with("diameter_m = ", "diameter_m = 10.36"));
+    write_file(dir / "unread.toml", defaults_with("diameter_m = ", "diameter_m = 10.36"));
     fs::permissions(dir / "unread.toml", fs::perms::none);
     const Refusal c{"unread.toml", {"configuration file", "unread.toml cannot be read (permissions?)"}};
     check_refused(run_unprivileged("geometry " + (dir / "unread.toml").string()), c, out);
@@ -131,18 +126,18 @@ TEST_CASE("measured profile files given to calibrate exit 2 naming the file, lin
   const fs::path dir = temp_dir("bad_scans");
   const fs::path out = dir / "cal";
   const std::string head = "hours,x_m,y_m\n";
-  write(dir / "empty.csv", "");
-  write(dir / "header.csv", head);
-  write(dir / "text.csv", head + "1000,0,0.07\n1000,abc,0.07\n1000,0.5,0.07\n");
-  write(dir / "nan.csv", head + "1000,0,0.075\n1000,0.25,nan\n1000,0.508618,0.075\n");
-  write(dir / "spaces.csv", "hours x_m y_m\n1000 0 0.075\n");
-  write(dir / "crossing.csv", head + "1000,0,0.075\n1000,0.3,0.3\n1000,0.1,0.3\n1000,0.2,0.01\n1000,0.508618,0.075\n");
-  write(dir / "outside.csv", head + "1000,0,0.075\n1000,0.25,-0.01\n1000,0.508618,0.075\n");
-  write(dir / "wide.csv", head + "1000,0,0.075\n1000,0.25,0.3\n1000,0.9,0.075\n");
-  write(dir / "unsorted.csv", head + "1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n"
+  write_file(dir / "empty.csv", "");
+  write_file(dir / "header.csv", head);
+  write_file(dir / "text.csv", head + "1000,0,0.07\n1000,abc,0.07\n1000,0.5,0.07\n");
+  write_file(dir / "nan.csv", head + "1000,0,0.075\n1000,0.25,nan\n1000,0.508618,0.075\n");
+  write_file(dir / "spaces.csv", "hours x_m y_m\n1000 0 0.075\n");
+  write_file(dir / "crossing.csv", head + "1000,0,0.075\n1000,0.3,0.3\n1000,0.1,0.3\n1000,0.2,0.01\n1000,0.508618,0.075\n");
+  write_file(dir / "outside.csv", head + "1000,0,0.075\n1000,0.25,-0.01\n1000,0.508618,0.075\n");
+  write_file(dir / "wide.csv", head + "1000,0,0.075\n1000,0.25,0.3\n1000,0.9,0.075\n");
+  write_file(dir / "unsorted.csv", head + "1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n"
                                      "500,0,0.075\n500,0.25,0.3\n500,0.508618,0.075\n");
-  write(dir / "negative.csv", head + "-5,0,0.075\n-5,0.25,0.3\n-5,0.508618,0.075\n");
-  write(dir / "two.csv", head + "1000,0,0.075\n1000,0.25,0.3\n");
+  write_file(dir / "negative.csv", head + "-5,0,0.075\n-5,0.25,0.3\n-5,0.508618,0.075\n");
+  write_file(dir / "two.csv", head + "1000,0,0.075\n1000,0.25,0.3\n");
   const std::vector<Refusal> cases = {
       {"empty.csv", {"empty.csv: no measured profile in the file"}},
       {"header.csv", {"header.csv: no measured profile in the file"}},
@@ -167,7 +162,7 @@ TEST_CASE("measured profile files given to calibrate exit 2 naming the file, lin
     WARN("running as root without setpriv: the unreadable-file case is not checked");
   } else {
     open_to_all(dir);
-    write(dir / "unread.csv", head + "1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n");
+    write_file(dir / "unread.csv", head + "1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n");
     fs::permissions(dir / "unread.csv", fs::perms::none);
     check_refused(run_unprivileged("calibrate --measured " + (dir / "unread.csv").string()),
                   {"unread.csv", {"measured profile file", "unread.csv cannot be read"}}, out);
@@ -179,8 +174,8 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
   const fs::path dir = temp_dir("bad_usage");
   const fs::path out = dir / "out";
   const std::string o = " --out " + out.string();
-  write(dir / "ok.csv", "hours,x_m,y_m\n1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n");
-  write(dir / "a.toml", defaults_with("diameter_m = ", "diameter_m = 10.36"));
+  write_file(dir / "ok.csv", "hours,x_m,y_m\n1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n");
+  write_file(dir / "a.toml", defaults_with("diameter_m = ", "diameter_m = 10.36"));
   const std::string csv = (dir / "ok.csv").string(), toml = (dir / "a.toml").string();
   const std::vector<Refusal> cases = {
       {"forecast --resume --quiet", {"--resume", "give --out"}},
@@ -231,7 +226,7 @@ TEST_CASE("a forecast whose new liner already meets a relining criterion is refu
   const fs::path dir = temp_dir("bad_start");
   const fs::path out = dir / "out";
   for (const StartCase& c : met_at_start()) {
-    write(dir / "start.toml", defaults_with(c.old_line, c.new_line));
+    write_file(dir / "start.toml", defaults_with(c.old_line, c.new_line));
     for (const std::string extra : {"", " --resume"}) {
       const RunResult r =
           run_linerlife("forecast " + (dir / "start.toml").string() + " --quiet --out " + out.string() + extra, 30);
@@ -260,7 +255,7 @@ TEST_CASE("a forecast refused at setup leaves no output folder", "[app][cli][inp
   dem.insert(dem.find("\n[dem]\n") + 7, "time_step_s = 0.01\n");
   configs.push_back(dem);
   for (const std::string& text : configs) {
-    write(dir / "bad.toml", text);
+    write_file(dir / "bad.toml", text);
     const RunResult r = run_linerlife("forecast " + (dir / "bad.toml").string() + " --quiet --out " + out.string(), 30);
     INFO(r.err);
     CHECK(r.code == 2);
@@ -274,7 +269,7 @@ TEST_CASE("an output folder that cannot be written, or a checkpoint that is not 
           "[app][cli][input]") {
   const fs::path dir = temp_dir("bad_out");
   // --out names an existing file: refused, and the file is left as it was
-  write(dir / "afile", "x");
+  write_file(dir / "afile", "x");
   RunResult r = run_linerlife("geometry --out " + (dir / "afile").string());
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Contains("output folder " + (dir / "afile").string() + " exists and is not a folder"));
@@ -292,7 +287,7 @@ TEST_CASE("an output folder that cannot be written, or a checkpoint that is not 
     r = run_unprivileged("geometry --out " + ro.string());
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Catch::Contains("output folder " + ro.string() + " cannot be written (permissions)"));
-    write(dir / "ok.csv", "hours,x_m,y_m\n1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n");
+    write_file(dir / "ok.csv", "hours,x_m,y_m\n1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n");
     const std::vector<std::string> writers = {"geometry", "charge", "wear", "forecast --quiet",
                                               "calibrate --measured " + (dir / "ok.csv").string()};
     for (const std::string& cmd : writers) {
@@ -309,7 +304,7 @@ TEST_CASE("an output folder that cannot be written, or a checkpoint that is not 
   // --resume over a checkpoint.h5 that is not HDF5, or HDF5 but not a checkpoint
   const fs::path cp = dir / "resume";
   fs::create_directories(cp);
-  write(cp / "checkpoint.h5", "garbage\n");
+  write_file(cp / "checkpoint.h5", "garbage\n");
   r = run_linerlife("forecast --quiet --out " + cp.string() + " --resume", 30);
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Contains("checkpoint.h5 is not a readable HDF5 file"));

@@ -19,11 +19,6 @@ double json_number(const std::string& json, const std::string& key) {
   return std::stod(m[1]);
 }
 
-void write(const fs::path& p, const std::string& text) {
-  std::ofstream f(p);
-  f << text;
-}
-
 }  // namespace
 
 TEST_CASE("the version and help options and usage errors", "[app][cli]") {
@@ -63,7 +58,7 @@ TEST_CASE("the defaults file runs to the same result as the bundled mill", "[app
   const fs::path dir = temp_dir("defaults");
   RunResult d = run_linerlife("defaults");
   REQUIRE(d.code == 0);
-  write(dir / "mine.toml", d.out);
+  write_file(dir / "mine.toml", d.out);
   const RunResult a = run_linerlife("geometry --json"), b = run_linerlife("geometry --json " + (dir / "mine.toml").string());
   REQUIRE(b.code == 0);
   for (const char* k : {"lifter_height_m", "liner_mass_kg_per_m", "diameter_eff_m", "n_surface_elements"})
@@ -73,7 +68,7 @@ TEST_CASE("the defaults file runs to the same result as the bundled mill", "[app
 
 TEST_CASE("bad input exits 2 with a message and creates no output", "[app][cli][input]") {
   const fs::path dir = temp_dir("badinput");
-  write(dir / "bad.toml", "[mill]\ndiameter_m = 10.36\nlenght_m = 5.0\n");
+  write_file(dir / "bad.toml", "[mill]\ndiameter_m = 10.36\nlenght_m = 5.0\n");
   const fs::path out = dir / "out";
   RunResult r = run_linerlife("geometry " + (dir / "bad.toml").string() + " --out " + out.string());
   CHECK(r.code == 2);
@@ -87,7 +82,7 @@ TEST_CASE("bad input exits 2 with a message and creates no output", "[app][cli][
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Contains("is a directory"));
   // an output folder that cannot be created
-  write(dir / "file", "x");
+  write_file(dir / "file", "x");
   r = run_linerlife("geometry --out " + (dir / "file" / "sub").string());
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Contains("cannot be created"));
@@ -142,9 +137,9 @@ TEST_CASE("every refusal exits 2 with its message and writes nothing", "[app][cl
     std::string section, key, line, words;
   };
   const fs::path dir = temp_dir("refusals");
-  write(dir / "empty.csv", "x_m,y_m\n");
-  write(dir / "outside.csv", "0,0.075\n0.25,-0.01\n0.508618,0.075\n");
-  write(dir / "crossing.csv", "0,0.075\n0.3,0.3\n0.1,0.3\n0.2,0.01\n0.508618,0.075\n");
+  write_file(dir / "empty.csv", "x_m,y_m\n");
+  write_file(dir / "outside.csv", "0,0.075\n0.25,-0.01\n0.508618,0.075\n");
+  write_file(dir / "crossing.csv", "0,0.075\n0.3,0.3\n0.1,0.3\n0.2,0.01\n0.508618,0.075\n");
   const std::vector<Bad> cases = {
       {"mill", "diameter_m", "diametre_m = 10.0", "unknown key [mill] diametre_m"},
       {"mill", "diameter_m", "diameter_m = \"big\"", "expected a number"},
@@ -171,7 +166,7 @@ TEST_CASE("every refusal exits 2 with its message and writes nothing", "[app][cl
   };
   for (const Bad& b : cases) {
     const fs::path cfg = dir / "bad.toml";
-    write(cfg, variant(b.section, b.key, b.line));
+    write_file(cfg, variant(b.section, b.key, b.line));
     const fs::path out = dir / "out";
     const RunResult r = run_linerlife("geometry " + cfg.string() + " --out " + out.string());
     INFO(b.line << "\n" << r.err);

@@ -22,11 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void write(const fs::path& p, const std::string& text) {
-  std::ofstream f(p);
-  f << text;
-}
-
 /// The bundled Qiu mill cut down for tests: 2 revolutions a drive, a coarse
 /// refresh, 20 mm elements, and a life that ends at 0.20 m of lifter (about
 /// 3,500 h; a second of wall time). Extra `[forecast]` / `[wear]` lines are
@@ -52,7 +47,7 @@ bool is_iso_date(const std::string& s) { return std::regex_match(s, std::regex("
 TEST_CASE("forecast --json gives the relining date, the criterion and the history along the life",
           "[app][cli][forecast]") {
   const fs::path dir = temp_dir("fc_json");
-  write(dir / "m.toml", fast_qiu());
+  write_file(dir / "m.toml", fast_qiu());
   const RunResult r = run_linerlife("forecast " + (dir / "m.toml").string() + " --json");
   INFO(r.err);
   REQUIRE(r.code == 0);
@@ -94,7 +89,7 @@ TEST_CASE("forecast --json gives the relining date, the criterion and the histor
 
 TEST_CASE("forecast --out writes the results file and its charts; plot redraws them", "[app][cli][forecast][plot]") {
   const fs::path dir = temp_dir("fc_out");
-  write(dir / "m.toml", fast_qiu());
+  write_file(dir / "m.toml", fast_qiu());
   const RunResult r = run_linerlife("forecast " + (dir / "m.toml").string() + " --quiet --out " + (dir / "run").string());
   INFO(r.err);
   REQUIRE(r.code == 0);
@@ -134,7 +129,7 @@ TEST_CASE("forecast --out writes the results file and its charts; plot redraws t
 
 TEST_CASE("forecast runs each method from the command line; euler agrees with the ODE", "[app][cli][forecast]") {
   const fs::path dir = temp_dir("fc_methods");
-  write(dir / "m.toml", fast_qiu());
+  write_file(dir / "m.toml", fast_qiu());
   double life[3] = {0, 0, 0};
   const char* methods[3] = {"ode", "euler", "amplify"};
   for (int i = 0; i < 3; ++i) {
@@ -154,7 +149,7 @@ TEST_CASE("forecast runs each method from the command line; euler agrees with th
 
 TEST_CASE("compare --vary forecasts one case per value and ranks them in a table", "[app][cli][compare]") {
   const fs::path dir = temp_dir("fc_compare");
-  write(dir / "m.toml", fast_qiu());
+  write_file(dir / "m.toml", fast_qiu());
   const RunResult r =
       run_linerlife("compare " + (dir / "m.toml").string() + " --vary liner.lifter_height_m=0.23,0.25 --json");
   INFO(r.err);
@@ -181,8 +176,8 @@ TEST_CASE("calibrate recovers the wear factor of synthetic scans from the comman
   // Scans: the forecast of the same mill with every calibration factor 1.3.
   const fs::path dir = temp_dir("fc_calibrate");
   const std::string k13 = "calibration_centrifugal = 1.3\ncalibration_gravitational = 1.3\ncalibration_impact = 1.3\n";
-  write(dir / "true.toml", fast_qiu("output_interval_h = 500\n", k13));
-  write(dir / "m.toml", fast_qiu("output_interval_h = 500\n"));
+  write_file(dir / "true.toml", fast_qiu("output_interval_h = 500\n", k13));
+  write_file(dir / "m.toml", fast_qiu("output_interval_h = 500\n"));
   const RunResult f = run_linerlife("forecast " + (dir / "true.toml").string() + " --quiet --out " +
                                     (dir / "truth").string());
   INFO(f.err);

@@ -81,10 +81,7 @@ std::vector<std::string> temporaries(const fs::path& dir) {
 TEST_CASE("a forecast killed with SIGKILL at random moments and resumed ends as the uninterrupted run",
           "[app][cli][forecast][resume]") {
   const fs::path dir = temp_dir("fc_kill");
-  {
-    std::ofstream f(dir / "m.toml");
-    f << resumable_qiu();
-  }
+  write_file(dir / "m.toml", resumable_qiu());
   const std::string cfg = (dir / "m.toml").string();
 
   // the uninterrupted run, timed to place the kills

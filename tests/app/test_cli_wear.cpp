@@ -15,11 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void write(const fs::path& p, const std::string& text) {
-  std::ofstream f(p);
-  f << text;
-}
-
 /// The bundled mill with extra lines appended to its [wear] section (the last one).
 /// The bundled mill with `wear_lines` added to its [wear] section.
 std::string bundled_with(const std::string& wear_lines) {
@@ -69,7 +64,7 @@ TEST_CASE("wear: options and bad input exit 2 before any work", "[app][cli][wear
         ConfigCase{bundled_with("smoothing_tukey = \"3RZ\"\n"), "smoothing_tukey"},
         ConfigCase{bundled_with("liner_poisson_ratio = 0.7\n"), "liner_poisson_ratio"}}) {
     const fs::path cfg = dir / "bad.toml";
-    write(cfg, c.text);
+    write_file(cfg, c.text);
     r = run_linerlife("wear " + cfg.string() + " --out " + out.string());
     INFO(r.err);
     CHECK(r.code == 2);
@@ -79,7 +74,7 @@ TEST_CASE("wear: options and bad input exit 2 before any work", "[app][cli][wear
   // a negative hardness is refused by the [liner] range
   std::string text = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/qiu2001_sag.toml");
   text = std::regex_replace(text, std::regex("hardness_bhn = 350.0"), "hardness_bhn = -350.0");
-  write(dir / "neg.toml", text);
+  write_file(dir / "neg.toml", text);
   r = run_linerlife("wear " + (dir / "neg.toml").string());
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Contains("hardness_bhn"));
@@ -95,7 +90,7 @@ TEST_CASE("wear: an impact law with a charge model that gives no impacts is refu
     std::string text = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/qiu2001_sag.toml");
     text = std::regex_replace(text, std::regex("charge = \"layer\""), std::string("charge = \"") + e.name + "\"");
     text = std::regex_replace(text, std::regex("\\[wear\\]\n"), "[wear]\nlaws = \"impact/bitter\"\n");
-    write(dir / "c.toml", text);
+    write_file(dir / "c.toml", text);
     const RunResult r = run_linerlife("wear " + (dir / "c.toml").string());
     INFO(e.name << ": " << r.err);
     CHECK(r.code == 2);

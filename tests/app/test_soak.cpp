@@ -113,10 +113,7 @@ void soak(int runs, unsigned seed) {
   for (int k = 0; k < runs; ++k) {
     const RandomMill m = random_mill(rng);
     const fs::path cfg = dir / fmt::format("mill{:03d}.toml", k);
-    {
-      std::ofstream f(cfg);
-      f << m.toml;
-    }
+    write_file(cfg, m.toml);
     // a hang shows as the timeout's exit code 124 (a run takes a few seconds;
     // LINERLIFE_TIMEOUT_SCALE stretches the limit for sanitizer builds)
     const char* scale = std::getenv("LINERLIFE_TIMEOUT_SCALE");
