@@ -67,6 +67,30 @@ namespace {
 using V = Eigen::Vector2d;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+/// True if the cell's part of a displaced ring (its elements and one on each
+/// side) crosses itself. Between remeshes the nodes move along their offset
+/// directions; where a worn lifter has become a needle with notches smaller
+/// than the depth between remeshes, a notch node can pass through the needle
+/// and the ring folds. The folded part is material the wear removed (a remesh
+/// takes it away), but a gauge read on the folded ring sees its points: the
+/// soak (docs/reliability.md) found a crest that "rose" 3.8 mm that way.
+bool cell_folds(const LinerSurface& s, int n_cell) {
+  const int n = s.n_nodes();
+  auto at = [&](int i) -> const V& { return s.nodes[static_cast<size_t>(((i % n) + n) % n)]; };
+  auto orient = [](const V& a, const V& b, const V& c) {
+    const double o = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+    return (o > 0) - (o < 0);
+  };
+  const int lo = -1, hi = std::min(n_cell + 1, n - 1);  // elements lo .. hi-1
+  for (int i = lo; i < hi; ++i)
+    for (int j = i + 2; j < hi; ++j) {
+      if (((j + 1 - i) % n) == 0) continue;  // adjacent through the wrap
+      const V &a = at(i), &b = at(i + 1), &c = at(j), &d = at(j + 1);
+      if (orient(a, b, c) * orient(a, b, d) < 0 && orient(c, d, a) * orient(c, d, b) < 0) return true;
+    }
+  return false;
+}
+
 /// The representative cell of the ring: segments 0 .. p-1, repeated by rotation.
 class Cell {
  public:
@@ -308,9 +332,10 @@ class Life {
   }
 
   // --- the root functions: criteria, remesh and refresh ---
-  static constexpr int kRoots = 6;
+  static constexpr int kRoots = 7;
   void roots(const double* y, double* g) {
-    const Gauge gg = gauge(cell_.displaced(y), cell_.period(), in_.rotation, in_.density_kg_m3);
+    const LinerSurface ring = cell_.displaced(y);
+    const Gauge gg = gauge(ring, cell_.period(), in_.rotation, in_.density_kg_m3);
     crit_.eval(gg, g);
     double ymax = 0, moved = 0;
     for (int i = 0; i < cell_.size(); ++i) {
@@ -319,6 +344,9 @@ class Life {
     }
     g[4] = remesh_depth_ - ymax;
     g[5] = spec_.refresh_always ? 1.0 : spec_.refresh_tol_m - moved;
+    // a fold of the displaced ring: remesh where it starts (a step function;
+    // CVODE's root finding brackets its switch like any sign change)
+    g[6] = cell_folds(ring, cell_.size()) ? -1.0 : 1.0;
   }
 
   std::exception_ptr error;  // set by a callback that failed
@@ -647,7 +675,7 @@ void Life::run_ode() {
       check(CVodeSetNonlinearSolver(s.mem, s.NLS), "CVodeSetNonlinearSolver", t_);
     }
     check(CVodeRootInit(s.mem, kRoots, root_callback), "CVodeRootInit", t_);
-    int dir[kRoots] = {-1, -1, -1, -1, -1, -1};
+    int dir[kRoots] = {-1, -1, -1, -1, -1, -1, -1};
     check(CVodeSetRootDirection(s.mem, dir), "CVodeSetRootDirection", t_);
   };
   auto reinit = [&] {
@@ -691,7 +719,7 @@ void Life::run_ode() {
       // A remesh and a refresh can fall on the same step, and after a restart
       // a refresh condition sitting exactly at zero is not seen as a crossing:
       // decide the refresh from the state, not from the root flag alone.
-      const bool remeshed = found[4] != 0;
+      const bool remeshed = found[4] != 0 || found[6] != 0;
       if (remeshed) do_remesh();
       if (spec_.refresh_always ? remeshed : (found[5] || moved_since_drive() >= (1 - 1e-6) * spec_.refresh_tol_m))
         drive(spec_.revolutions_per_drive);

@@ -110,6 +110,7 @@ void soak(int runs, unsigned seed) {
   const fs::path dir = temp_dir("soak" + std::to_string(seed));
   std::mt19937 rng(seed);
   int reached = 0, height_rises = 0, rising_runs = 0;
+  double max_crest_rise = 0;  // [m] the largest rise of the crest between two records, over all runs
   for (int k = 0; k < runs; ++k) {
     const RandomMill m = random_mill(rng);
     const fs::path cfg = dir / fmt::format("mill{:03d}.toml", k);
@@ -139,15 +140,17 @@ void soak(int runs, unsigned seed) {
     for (size_t i = 1; i < hours.size(); ++i) {
       CHECK(hours[i] > hours[i - 1]);
       CHECK(mass[i] <= mass[i - 1] * (1 + 1e-12));
-      // the crest never rises (recession is never negative). It is measured
-      // on the polygon of surface nodes; between remeshes that is the
-      // displaced ring, where a thin worn feature can fold slightly before
-      // the remesh removes the loop: 0.3 mm of apparent rise was seen on a
-      // 0.64 m lifter (docs/reliability.md), so 0.1 % of the crest or
-      // 0.1 mm is allowed. The height above the worn plate may rise: where
-      // the plate wears faster than the crest it grows; the count is
-      // reported below and in docs/reliability.md
-      CHECK(crest[i] <= crest[i - 1] + std::max(1e-4, 1e-3 * crest[i - 1]));
+      // the crest never rises (recession is never negative, a remesh only
+      // removes material). It is measured on the polygon of surface nodes;
+      // between remeshes that is the displaced ring, which a fold (a notch
+      // node passing through a needle-shaped lifter) made rise by up to
+      // 3.8 mm before the forecast remeshed at every fold
+      // (docs/reliability.md, Soak); 1 um is allowed for round-off. The
+      // height above the worn plate may rise: where the plate wears faster
+      // than the crest it grows; the count is reported below and in
+      // docs/reliability.md
+      max_crest_rise = std::max(max_crest_rise, crest[i] - crest[i - 1]);
+      CHECK(crest[i] <= crest[i - 1] + 1e-6);
       if (lifter[i] > lifter[i - 1] + 1e-9) ++height_rises;
     }
     if (j["reached"].b) ++reached;
@@ -155,7 +158,8 @@ void soak(int runs, unsigned seed) {
     height_rises = 0;
   }
   WARN(runs << " random mills: " << reached << " reached a criterion; in " << rising_runs
-            << " the lifter height above the worn plate rose at some point");
+            << " the lifter height above the worn plate rose at some point; the largest rise of the crest "
+            << "between two records was " << max_crest_rise * 1e3 << " mm");
   // most random mills wear out within the 50,000 h horizon
   CHECK(reached >= runs / 2);
 }
@@ -171,4 +175,56 @@ TEST_CASE("forecasts on 20 random valid mills end cleanly with a liner that only
 TEST_CASE("forecasts on 100 random valid mills end cleanly with a liner that only wears",
           "[app][soak][forecast][slow]") {
   soak(100, 2026);
+}
+
+// Run 90 of the 100-mill soak (seed 2026), kept as a regression: a ball mill
+// whose 0.27 m lifters wear into needles leaning to one side. The remesh
+// leaves notches smaller than the depth between remeshes at the needle's tip;
+// a notch node then passed through the needle, the displaced ring folded and
+// the crest read on it rose 3.8 mm over 200 h (20,200 to 20,400 h) until the
+// next remesh. The forecast now remeshes where the ring starts to fold.
+// About 20 s (Release).
+TEST_CASE("a lifter worn into a needle: the crest read between remeshes never rises", "[app][soak][forecast]") {
+  const fs::path dir = temp_dir("needle");
+  const fs::path cfg = dir / "mill090.toml";
+  write_file(cfg, R"([mill]
+diameter_m = 9.043993900046525
+length_m = 7.282022592828505
+speed_fraction_critical = 0.6305426486605296
+rotation = "ccw"
+[charge]
+filling = 0.3305011042510201
+ball_filling = 0.3305011042510201
+ball_diameter_m = 0.04660809963004417
+[liner]
+segments = 40
+plate_thickness_m = 0.09836400255424145
+lifter_height_m = 0.2698288025472616
+lifter_top_width_m = 0.11398964909729994
+face_angle_leading_deg = 5.260346053457269
+face_angle_trailing_deg = 6.678552512805253
+element_size_m = 0.02
+[model]
+charge = "layer"
+variant = "1.1"
+[forecast]
+revolutions_per_drive = 2
+refresh_tol_m = 0.010793152101890463
+min_lifter_height_m = 0.1894413861069493
+)");
+  const char* scale = std::getenv("LINERLIFE_TIMEOUT_SCALE");
+  const RunResult r = run_linerlife("forecast " + cfg.string() + " --json --quiet",
+                                    static_cast<int>(300 * (scale ? std::max(1.0, std::atof(scale)) : 1.0)));
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const JsonValue j = parse_json(r.out);
+  const std::vector<double> hours = j["history"]["hours"].nums(), crest = j["history"]["crest_thickness_m"].nums(),
+                            mass = j["history"]["liner_mass_kg_per_m"].nums();
+  // the needle forms after about 20,000 h; the run must get there
+  REQUIRE(hours.back() > 20500);
+  for (size_t i = 1; i < hours.size(); ++i) {
+    INFO("record " << i << " at " << hours[i] << " h");
+    CHECK(crest[i] <= crest[i - 1] + 1e-6);
+    CHECK(mass[i] <= mass[i - 1] * (1 + 1e-12));
+  }
 }
