@@ -2,6 +2,7 @@
 // the classes that had no CLI-level test yet. Every case exits 2 before any
 // work, names the file (and line) or the option and the value, and leaves no
 // output behind. Each run is a refusal (about 0.1 s); no forecast is run.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -236,6 +238,12 @@ TEST_CASE("a forecast whose new liner already meets a relining criterion is refu
       CHECK_THAT(r.err, Catch::Contains("already meets the relining criterion " + c.criterion + " at the start"));
       CHECK_THAT(r.err, Catch::Contains("lifter height 0.2500 m, thinnest point 0.0750 m, leading face 20.00 deg"));
       CHECK_THAT(r.err, Catch::Contains("[forecast]"));
+      // the key's line in the file, with its value (DESIGN.md §4)
+      const std::string text = defaults_with(c.old_line, c.new_line);
+      const size_t at = text.find(c.new_line);
+      REQUIRE(at != std::string::npos);
+      const long line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n');
+      CHECK_THAT(r.err, Catch::Contains(fmt::format("{}:{}: {}", (dir / "start.toml").string(), line, c.old_line)));
       if (fs::exists(out)) CHECK(fs::is_empty(out));  // no results, no checkpoint
       fs::remove_all(out);
     }
