@@ -5,6 +5,7 @@
 // (docs/models/forecast.md).
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -45,6 +46,29 @@ ProgressFn progress_bar(bool quiet) {
 
 std::string num(double v, const char* f) { return std::isfinite(v) ? fmt::format(fmt::runtime(f), v) : "n/a"; }
 
+namespace {
+
+/// Forwards to a rate provider and fails at drive `fail_at` (0-based).
+class FailingRateProvider : public RateProvider {
+ public:
+  FailingRateProvider(std::unique_ptr<RateProvider> inner, long long fail_at)
+      : inner_(std::move(inner)), fail_at_(fail_at) {}
+  RateSample sample(const LinerSurface& s, double revolutions) override {
+    if (inner_->drive_count() >= fail_at_)
+      throw SimulationError(fmt::format("charge drive {} failed (injected by LINERLIFE_FAIL_AT_DRIVE={})",
+                                        inner_->drive_count(), fail_at_));
+    return inner_->sample(s, revolutions);
+  }
+  long long drive_count() const override { return inner_->drive_count(); }
+  void set_drive_count(long long n) override { inner_->set_drive_count(n); }
+
+ private:
+  std::unique_ptr<RateProvider> inner_;
+  long long fail_at_;
+};
+
+}  // namespace
+
 int run_forecast_command(const ForecastOptions& o) {
   Config c = load_config_or_default(o.config);
   if (!o.method.empty())
@@ -55,6 +79,11 @@ int run_forecast_command(const ForecastOptions& o) {
   if (!o.out.empty()) check_output_dir_writable(o.out);
   ForecastSetup setup = make_forecast_setup(c);
   const std::string config_text = config_to_toml(c, false);
+  // Fault injection for the tests of the failure path (docs/reliability.md):
+  // LINERLIFE_FAIL_AT_DRIVE=N makes charge drive N fail as a charge model that
+  // blew up would. Not a user setting; it never changes a run that succeeds.
+  if (const char* fail = std::getenv("LINERLIFE_FAIL_AT_DRIVE"))
+    setup.provider = std::make_unique<FailingRateProvider>(std::move(setup.provider), std::atoll(fail));
 
   // checkpoints go to DIR/checkpoint.h5; --resume continues from it
   ForecastHooks hooks;

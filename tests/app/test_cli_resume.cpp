@@ -2,6 +2,8 @@
 // --resume ends with the same results as the uninterrupted run, and never
 // leaves a half-written results or checkpoint file behind.
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +14,7 @@
 #include <vector>
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <signal.h>
 #include <sys/wait.h>
@@ -165,4 +168,45 @@ TEST_CASE("a forecast killed with SIGKILL at random moments and resumed ends as 
     CHECK_FALSE(fs::exists(out / "checkpoint.h5"));  // removed once the run is complete
     CHECK(temporaries(out).empty());
   }
+}
+
+// Issue 7 §5: a simulation that fails part-way ends with exit 3 and a
+// diagnostic, and the results up to the failure are written whole and marked
+// partial. The failure is injected at a charge drive (LINERLIFE_FAIL_AT_DRIVE,
+// app/cmd_forecast.cpp) as a charge model that blew up would throw it.
+TEST_CASE("a forecast that fails part-way exits 3 and leaves its results marked partial", "[app][cli][forecast]") {
+  const fs::path dir = temp_dir("partial");
+  const fs::path cfg = dir / "qiu.toml", out = dir / "out";
+  write_file(cfg, resumable_qiu());
+  // the whole run, for comparison
+  const RunResult whole = run_linerlife("forecast " + cfg.string() + " --json --quiet", 300);
+  REQUIRE(whole.code == 0);
+  const JsonValue w = parse_json(whole.out);
+  const long long drives = static_cast<long long>(w["charge_redrives"].num());
+  REQUIRE(drives >= 6);
+  const long long fail_at = drives / 2;
+  ::setenv("LINERLIFE_FAIL_AT_DRIVE", std::to_string(fail_at).c_str(), 1);
+  const RunResult r = run_linerlife("forecast " + cfg.string() + " --json --quiet --out " + out.string(), 300);
+  ::unsetenv("LINERLIFE_FAIL_AT_DRIVE");
+  INFO(r.err);
+  CHECK(r.code == 3);
+  CHECK_THAT(r.err, Catch::Contains("linerlife: simulation failed: "));
+  CHECK_THAT(r.err, Catch::Contains(fmt::format("charge drive {} failed", fail_at)));
+  CHECK_THAT(r.err, Catch::Contains("marked partial"));
+  CHECK(r.out.empty());  // no JSON result for a failed run
+  REQUIRE(fs::exists(out / "forecast.h5"));
+  CHECK(temporaries(out).empty());
+  const H5Reader h5((out / "forecast.h5").string());
+  CHECK(h5.attr_int("/", "partial") == 1);
+  CHECK(h5.attr_int("/forecast", "partial") == 1);
+  // the partial history is the start of the whole run's, up to the failure
+  const std::vector<double> hours = h5.doubles("/forecast/history/hours");
+  const std::vector<double> whole_hours = w["history"]["hours"].nums();
+  REQUIRE(!hours.empty());
+  CHECK(hours.size() < whole_hours.size());
+  for (size_t i = 0; i + 1 < hours.size(); ++i) CHECK(hours[i] == whole_hours[i]);
+  const std::vector<double> lifter = h5.doubles("/forecast/history/lifter_height_m");
+  REQUIRE(lifter.size() == hours.size());
+  for (double v : lifter) CHECK(std::isfinite(v));
+  fs::remove_all(dir);
 }
