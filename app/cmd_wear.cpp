@@ -17,6 +17,7 @@
 #include <optional>
 
 #include "app/commands.h"
+#include "app/forecast_setup.h"
 #include "app/json.h"
 #include "app/output_dir.h"
 #include "app/plots.h"
@@ -79,6 +80,7 @@ int run_wear_command(const WearOptions& o) {
   if (!o.rotation.empty()) mill.rotation = o.rotation == "cw" ? Rotation::Cw : Rotation::Ccw;
   const ChargeModelEntry& entry = find_charge_model(c.model.charge);
   make_wear_model(c.wear, entry);  // the law-model combination, before any work
+  warn_wear_loads(c);
   if (!o.out.empty()) check_output_dir_writable(o.out);
 
   WearRunInput in;

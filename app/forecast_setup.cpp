@@ -1,5 +1,9 @@
 #include "app/forecast_setup.h"
 
+#include <iostream>
+
+#include <fmt/format.h>
+
 #include "forecast/charge_wear_rate.h"
 #include "geometry/build_liner_surface.h"
 #include "wear/recession.h"
@@ -17,7 +21,18 @@ std::unique_ptr<RateProvider> make_scaled_provider(const Config& c, double kc, d
   return std::make_unique<ChargeWearRate>(c.mill, c.charge, c.model, entry, std::move(wear), c.material, 1);
 }
 
+bool warn_wear_loads(const Config& c) {
+  if (c.model.charge != "dem" || !(c.model.dem.coarse_grain > 1)) return false;
+  std::cerr << fmt::format(
+      "linerlife: warning: [dem] coarse_grain = {} biases the DEM's wear loads upwards (by 13 to 82 % at the "
+      "largest coarse-graining in docs/validation/speed-accuracy.md); the indicators are fine, the wear and the "
+      "relining date are not: use coarse_grain = 1 for wear\n",
+      c.model.dem.coarse_grain);
+  return true;
+}
+
 ForecastSetup make_forecast_setup(const Config& c) {
+  warn_wear_loads(c);
   ForecastSetup s;
   s.surface = std::make_shared<LinerSurface>(build_liner_surface(c.mill, c.liner));
   s.input.initial = s.surface.get();

@@ -114,3 +114,27 @@ TEST_CASE("wear: the bundled mill runs, or says which charge model is missing", 
                           "lifter_height_m", "face_angle_leading_deg", "simulated_s", "wall_s", "realtime_ratio"})
     CHECK_THAT(r.out, Catch::Contains(std::string("\"") + key + "\""));
 }
+
+// docs/validation/speed-accuracy.md: the DEM's coarse-graining biases its wear
+// loads upwards, so a wear run (and a forecast) on a coarse-grained DEM warns.
+TEST_CASE("wear: a coarse-grained DEM warns that its wear loads are biased", "[app][cli][wear][dem]") {
+  if (!has_model("dem")) return;
+  const fs::path dir = temp_dir("wear_cg");
+  std::string text = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/pilot_test_01.toml");
+  text = std::regex_replace(text, std::regex("charge = \"layer\"\n"), "charge = \"dem\"\n");
+  for (const char* cg : {"1.2", "1.0"}) {
+    const fs::path cfg = dir / "pilot.toml";
+    write_file(cfg, text + "\n[dem]\ncoarse_grain = " + cg + "\nthreads = 1\nsettle_revolutions = 0.2\n");
+    const RunResult r = run_linerlife("wear " + cfg.string() + " --json --revolutions 0.2", 120);
+    INFO("coarse_grain " << cg << "\n" << r.err);
+    REQUIRE(r.code == 0);
+    CHECK_THAT(r.out, Catch::Contains("\"mass_loss_kg_per_m\""));
+    if (std::string(cg) == "1.2") {
+      CHECK_THAT(r.err, Catch::Contains("warning: [dem] coarse_grain = 1.2 biases the DEM's wear loads upwards"));
+      CHECK_THAT(r.err, Catch::Contains("speed-accuracy.md"));
+    } else {
+      CHECK_THAT(r.err, !Catch::Contains("warning"));
+    }
+  }
+  fs::remove_all(dir);
+}
