@@ -36,6 +36,7 @@
 #include <string>
 
 #include "app/config.h"
+#include "bench/bench_main.h"
 #include "charge/dem/dem_model.h"
 #include "geometry/build_liner_surface.h"
 #include "geometry/errors.h"
@@ -178,7 +179,7 @@ int realtime(const char* path, int threads, int reps, double revolutions) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
+  return bench::guarded_main([&] {
     const std::string mode = argc > 1 ? argv[1] : "";
     if (mode == "scaling" && argc >= 5)
       return scaling(std::atoi(argv[2]), std::atoi(argv[3]), std::atoi(argv[4]), argc > 5 ? std::atoll(argv[5]) : 2000);
@@ -195,11 +196,5 @@ int main(int argc, char** argv) {
                  "       bench_dem timestep CONFIG.toml SPC...\n"
                  "       bench_dem realtime CONFIG.toml THREADS REPS [REVOLUTIONS]\n");
     return 2;
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "input error: %s\n", e.what());
-    return 2;
-  } catch (const SimulationError& e) {
-    std::fprintf(stderr, "simulation failed: %s\n", e.what());
-    return 3;
-  }
+  });
 }

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "app/config.h"
+#include "bench/bench_main.h"
 #include "charge/dem/dem_model.h"
 #include "geometry/build_liner_surface.h"
 #include "geometry/errors.h"
@@ -26,7 +27,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: bench_dem_mill CONFIG.toml [dem_key=value ...] [json=1]\n");
     return 2;
   }
-  try {
+  return bench::guarded_main([&] {
     Config c = load_config_file(argv[1]);
     bool json = false, profile = false;
     for (int a = 2; a < argc; ++a) {
@@ -42,12 +43,7 @@ int main(int argc, char** argv) {
         profile = v == "1";
         continue;
       }
-      const KeySpec* spec = config_schema().find("dem", k);
-      if (!spec) throw InputError(k, "not a [dem] key: " + k);
-      ConfigValue cv = spec->kind == ConfigValue::Kind::String ? ConfigValue::String(v)
-                       : spec->kind == ConfigValue::Kind::Int  ? ConfigValue::Int(std::atoll(v.c_str()))
-                                                               : ConfigValue::Real(std::atof(v.c_str()));
-      spec->set(c, cv);
+      bench::set_dem_key(c, k, v);
     }
     const LinerSurface surface = build_liner_surface(c.mill, c.liner);
     ChargeInput in;
@@ -102,11 +98,5 @@ int main(int argc, char** argv) {
       for (const auto& [a, o] : info.band_occupancy) fmt::print("    {:.1f} {:.4f}\n", a, o);
     }
     return 0;
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "input error: %s\n", e.what());
-    return 2;
-  } catch (const SimulationError& e) {
-    std::fprintf(stderr, "simulation failed: %s\n", e.what());
-    return 3;
-  }
+  });
 }

@@ -16,12 +16,14 @@ import argparse
 import json
 import math
 import os
-import re
 import subprocess
 import sys
 
 import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from toml_edit import set_key  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -38,23 +40,6 @@ STUDIES = [
     ("euler", "forecast", "euler_step_h", [800, 400, 200, 100, 50], {"method": '"euler"'},
      "Euler step [h] (method euler)"),
 ]
-
-
-def set_key(text, section, key, value):
-    """The config text with section.key = value (replaced, or added under the header)."""
-    lines = text.split("\n")
-    out, cur, done = [], None, False
-    for ln in lines:
-        m = re.match(r"^\[([^\]]+)\]\s*$", ln)
-        if m:
-            cur = m.group(1)
-        if cur == section and re.match(rf"^{re.escape(key)}\s*=", ln):
-            ln, done = f"{key} = {value}", True
-        out.append(ln)
-    if not done:
-        i = out.index(f"[{section}]")
-        out.insert(i + 1, f"{key} = {value}")
-    return "\n".join(out)
 
 
 def run_case(binary, base_text, section, key, value, extra, out_dir):

@@ -16,12 +16,14 @@ docs/validation/img/qiu2001_profiles.png.
 import argparse
 import json
 import os
-import re
 import subprocess
 import sys
 
 import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from toml_edit import set_key  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -50,20 +52,6 @@ def forecast_profile(h5, hours):
     th = np.unwrap(np.arctan2(seg[:, 1], seg[:, 0]))
     centre = 0.5 * (th[0] + th[-1])
     return ph[i], R * (th - centre), R - np.hypot(seg[:, 0], seg[:, 1])
-
-
-def set_key(text, section, key, value):
-    out, cur, done = [], None, False
-    for ln in text.split("\n"):
-        m = re.match(r"^\[([^\]]+)\]\s*$", ln)
-        if m:
-            cur = m.group(1)
-        if cur == section and re.match(rf"^{re.escape(key)}\s*=", ln):
-            ln, done = f"{key} = {value}", True
-        out.append(ln)
-    if not done:
-        out.insert(out.index(f"[{section}]") + 1, f"{key} = {value}")
-    return "\n".join(out)
 
 
 def main():
