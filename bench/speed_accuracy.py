@@ -174,14 +174,17 @@ def run_forecasts(cache, out_dir, linerlife):
         open(cfg, "w").write(text)
         print(f"running {ck} ...", file=sys.stderr, flush=True)
         t0 = time.time()
-        p = subprocess.run([linerlife, "forecast", cfg, "--json", "--quiet"], capture_output=True, text=True)
+        out = cfg[:-5] + "_out"
+        p = subprocess.run([linerlife, "forecast", cfg, "--json", "--quiet", "--out", out], capture_output=True,
+                           text=True)
         wall = time.time() - t0
         if p.returncode != 0:
             cache[ck] = {"error": p.stderr.strip(), "exit": p.returncode, "wall_s": wall}
         else:
             j = json.loads(p.stdout)
             cache[ck] = {k: j[k] for k in ("operating_hours", "criterion", "charge_redrives", "remeshes",
-                                          "charge_simulated_s", "wall_s")}
+                                          "charge_simulated_s", "wall_s", "history")}
+            cache[ck]["results"] = os.path.join(out, "forecast.h5")
             cache[ck]["wall_s"] = wall
             cache[ck]["calibration_scale"] = scale
         tmp = os.path.join(out_dir, "results.json.tmp")
@@ -325,17 +328,35 @@ def draw(cache, mills, img):
     # the wear distribution along the segment, per mill
     fig, axes = plt.subplots(1, len(mills), figsize=(5 * len(mills), 4), squeeze=False)
     for ax, (key, name, cfg) in zip(axes.flat, mills):
-        for label in ("layer 1.0", "layer 1.1", "layer 1.2", f"dem coarse {COARSE[key]:g}", "dem fine", REF[0]):
+        for n, label in enumerate(("layer 1.0", "layer 1.1", "layer 1.2", f"dem coarse {COARSE[key]:g}", "dem fine",
+                                   REF[0])):
             r = cache.get(f"{key}/{label}")
             if not r or "error" in r or r.get("recession_m_s") is None:
                 continue
-            s, w = r["element_s_m"], r["recession_m_s"]
-            tot = sum(w)
-            ax.plot(s, [x / tot for x in w], label=label, lw=2.5 if label == REF[0] else 1.2,
-                    c="k" if label == REF[0] else None)
+            b = binned(r, NBINS)
+            if b is None:
+                continue
+            ax.stairs(b, [i / NBINS for i in range(NBINS + 1)], label=label, lw=2.5 if label == REF[0] else 1.2,
+                      color="k" if label == REF[0] else f"C{n}")
         ax.set_title(name)
-        label_axes(ax, "position along the segment [m]", "share of the segment's wear per element")
+        label_axes(ax, "position along the segment [fraction of its length]",
+                   f"share of the segment's wear per 1/{NBINS}")
     save(plt, fig, os.path.join(img, "speed_accuracy_wear.png"))
+
+    # the whole-life forecasts: lifter, thinnest point and power along the life
+    fc = [(label, cache[f"forecast/{label}"]) for label, _ in FORECASTS
+          if f"forecast/{label}" in cache and "history" in cache[f"forecast/{label}"]]
+    if fc:
+        fig, axes = plt.subplots(1, 3, figsize=(15, 4))
+        for label, r in fc:
+            h = r["history"]
+            for ax, key in zip(axes, ("lifter_height_m", "min_thickness_m", "net_power_kw")):
+                ax.plot(h["hours"], h[key], label=label, lw=2.2 if label.startswith("dem") else 1.2,
+                        c="k" if label.startswith("dem") else None)
+        for ax, yl in zip(axes, ("lifter height [m]", "thinnest point of the liner [m]", "net power [kW]")):
+            label_axes(ax, "operating hours", yl)
+        fig.suptitle("Qiu mill, whole-life forecast per charge model")
+        save(plt, fig, os.path.join(img, "speed_accuracy_forecast.png"))
 
     # DEM convergence: error against the reference for each series
     fig, axes = plt.subplots(1, 3, figsize=(14, 4))
@@ -349,17 +370,17 @@ def draw(cache, mills, img):
                 continue
             pts = []
             for label, group, args in runs_for(key):
-                if group != g:
+                if group != g and not (g == "revs" and label == "dem fine"):  # the default: 3 revolutions
                     continue
                 r = cache[f"{key}/{label}"]
                 e = errors(r, ref)
                 if e:
-                    pts.append((xv(r), e["power"], e["toe"], e["shoulder"]))
+                    pts.append((3.0 if label == "dem fine" else xv(r), e["power"], e["wear_rate"]))
             pts.sort()
-            ax.plot([p[0] for p in pts], [p[1] for p in pts], marker=markers[key], label=f"{name}: power [%]")
-            ax.plot([p[0] for p in pts], [p[3] for p in pts], marker=markers[key], ls="--",
-                    label=f"{name}: shoulder [deg]")
-        label_axes(ax, xl, "error against the reference")
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], marker=markers[key], label=f"{name}: power")
+            ax.plot([p[0] for p in pts], [p[2] for p in pts], marker=markers[key], ls="--",
+                    label=f"{name}: wear rate")
+        label_axes(ax, xl, "error against the reference [%]")
     save(plt, fig, os.path.join(img, "speed_accuracy_dem_convergence.png"))
 
 
