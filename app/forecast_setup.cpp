@@ -1,10 +1,13 @@
 #include "app/forecast_setup.h"
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 
 #include <fmt/format.h>
 
 #include "forecast/charge_wear_rate.h"
+#include "geometry/errors.h"
 #include "geometry/build_liner_surface.h"
 #include "wear/recession.h"
 
@@ -24,14 +27,31 @@ std::unique_ptr<RateProvider> make_scaled_provider(const Config& c, double kc, d
 bool warn_wear_loads(const Config& c) {
   if (c.model.charge != "dem" || !(c.model.dem.coarse_grain > 1)) return false;
   std::cerr << fmt::format(
-      "linerlife: warning: [dem] coarse_grain = {} biases the DEM's wear loads upwards (by 13 to 82 % at the "
-      "largest coarse-graining in docs/validation/speed-accuracy.md); the indicators are fine, the wear and the "
-      "relining date are not: use coarse_grain = 1 for wear\n",
+      "linerlife: warning: [dem] coarse_grain = {} changes the DEM's wear rate (by -11 to +40 % at s = 1.3 on "
+      "the pilot mills, within 5 % on the Qiu mill up to s = 1.8: docs/validation/speed-accuracy.md); check it "
+      "against coarse_grain = 1 before trusting the wear\n",
       c.model.dem.coarse_grain);
   return true;
 }
 
 ForecastSetup make_forecast_setup(const Config& c) {
+  // A coarse-grained DEM needs its largest disc under the lifter
+  // (docs/models/dem.md §3); the forecast wears the lifter down to
+  // min_lifter_height_m, and the DEM would refuse a drive part-way through.
+  // Refuse it here, before any work.
+  if (c.model.charge == "dem" && c.model.dem.coarse_grain > 1 && c.forecast.min_lifter_height_m > 0) {
+    const double s = c.model.dem.coarse_grain;
+    const double dmax = std::max(c.charge.ball_diameter_m, c.model.dem.rock_diameter_max_m);
+    const double h_end = c.forecast.min_lifter_height_m;
+    if (s * dmax > h_end * (1 + 1e-9))
+      throw InputError("dem.coarse_grain",
+                       fmt::format("{}coarse_grain = {}: the largest coarse disc ({:.4g} m) is taller than the lifter "
+                                   "the forecast wears down to ([forecast] min_lifter_height_m = {} m), so the DEM "
+                                   "would refuse a charge drive part-way through the life; for this forecast "
+                                   "coarse_grain <= {:.3g} (1: none)",
+                                   config_location(c, "dem.coarse_grain"), s, s * dmax, h_end,
+                                   std::max(1.0, std::floor(h_end / dmax * 1000) / 1000)));
+  }
   warn_wear_loads(c);
   ForecastSetup s;
   s.surface = std::make_shared<LinerSurface>(build_liner_surface(c.mill, c.liner));

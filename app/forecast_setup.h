@@ -19,14 +19,15 @@ struct ForecastSetup {
 };
 
 /// Throws InputError for a charge model that is not available, an
-/// incompatible wear law, or a liner material out of range (naming the key).
-/// Prints warn_wear_loads()'s caveat.
+/// incompatible wear law, a liner material out of range, or a DEM coarse
+/// enough that its discs would not fit under the lifter the forecast wears
+/// down to (naming the key). Prints warn_wear_loads()'s caveat.
 ForecastSetup make_forecast_setup(const Config& c);
 
 /// Prints a warning to stderr when the configuration's charge model gives
-/// wear loads known to be biased: the DEM with coarse_grain > 1 (its wear
-/// rate came out 13 to 82 % high at the largest coarse-graining the mills
-/// allowed, docs/validation/speed-accuracy.md). Returns whether it warned.
+/// wear loads that may be off: the DEM with coarse_grain > 1 (its wear rate
+/// came out -11 to +40 % of the media-size run's on the pilot mills,
+/// docs/validation/speed-accuracy.md). Returns whether it warned.
 bool warn_wear_loads(const Config& c);
 
 /// A provider for the configuration with its wear calibration factors scaled

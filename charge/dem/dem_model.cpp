@@ -278,14 +278,26 @@ ChargeResult run_dem(const ChargeInput& in, DemSetup setup, DemRunInfo* info_out
   const double dur = sums.duration;
   LinerLoads& L = res.loads;
   L.reset(surface.n_elements(), dur);
+  // Coarse-graining by s (docs/models/dem.md §3, "Wall loads"): the forces
+  // on the liner are the charge's and need no scaling, but two things scale
+  // with the disc size. The slip of a disc's contact point against the liner
+  // in the sheared bed is about the shear rate times its radius, s times the
+  // real ball's; and a coarse disc at the wall stands for s^2 real bodies of
+  // which only about s lie in the real wall layer. Slip and impact rates are
+  // divided by s. Measured on Qiu and pilot tests 1 and 12 (s = 1.3-1.8):
+  // without the division the wall slip and the real impact rate grew as about
+  // s; with it they stay within 10 % of the media-size run
+  // (docs/validation/speed-accuracy.md).
+  const double s_cg = ps.coarse_grain;
   for (int e = 0; e < surface.n_elements(); ++e) {
     L.normal_force_n_per_m[e] = sums.normal[e] / dur;
     L.shear_force_n_per_m[e] = sums.shear[e] / dur;
-    L.normal_slip_power_w_per_m[e] = sums.normal_slip[e] / dur;
-    L.shear_work_rate_w_per_m[e] = sums.shear_slip[e] / dur;
-    L.slip_speed_m_s[e] = sums.normal[e] > 0 ? sums.normal_slip[e] / sums.normal[e] : 0.0;
+    L.normal_slip_power_w_per_m[e] = sums.normal_slip[e] / dur / s_cg;
+    L.shear_work_rate_w_per_m[e] = sums.shear_slip[e] / dur / s_cg;
+    L.slip_speed_m_s[e] = sums.normal[e] > 0 ? sums.normal_slip[e] / sums.normal[e] / s_cg : 0.0;
   }
-  // Impacts: a disc stands for m'/m_real real balls or rocks per metre of length.
+  // Impacts: a disc stands for m'/m_real real balls or rocks per metre of
+  // length, of which 1/s are at the wall (above).
   L.has_impacts = true;
   double direct_mass = 0, all_mass = 0;
   const auto impacts = sys.take_impacts();
@@ -297,7 +309,7 @@ ChargeResult run_dem(const ChargeInput& in, DemSetup setup, DemRunInfo* info_out
     ev.tangential_speed_m_s = r.tangential_speed;
     ev.mass_kg = ps.real_mass_kg[r.particle];
     ev.diameter_m = ps.real_diameter_m[r.particle];
-    ev.rate_per_s = ps.mass_kg_per_m[r.particle] / ps.real_mass_kg[r.particle] / dur;
+    ev.rate_per_s = ps.mass_kg_per_m[r.particle] / ps.real_mass_kg[r.particle] / dur / s_cg;
     // thrown onto the liner: airborne at least as long as a free fall of its own diameter
     ev.direct = r.free_steps * dt >= std::sqrt(2 * 2 * ps.radius_m[r.particle] / kGravity);
     const double mass_rate = ev.mass_kg * ev.rate_per_s;

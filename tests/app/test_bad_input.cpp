@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -262,6 +263,9 @@ TEST_CASE("a forecast refused at setup leaves no output folder", "[app][cli][inp
   std::string dem = defaults_with("charge = \"layer\"", "charge = \"dem\"");
   dem.insert(dem.find("\n[dem]\n") + 7, "time_step_s = 0.01\n");
   configs.push_back(dem);
+  // a coarse-grained DEM whose discs would not fit under the worn lifter
+  configs.push_back(std::regex_replace(defaults_with("charge = \"layer\"", "charge = \"dem\""),
+                                       std::regex("\ncoarse_grain = [^\n]*"), "\ncoarse_grain = 1.5"));
   for (const std::string& text : configs) {
     write_file(dir / "bad.toml", text);
     const RunResult r = run_linerlife("forecast " + (dir / "bad.toml").string() + " --quiet --out " + out.string(), 30);
@@ -270,6 +274,28 @@ TEST_CASE("a forecast refused at setup leaves no output folder", "[app][cli][inp
     CHECK_FALSE(fs::exists(out));
     fs::remove_all(out);
   }
+  fs::remove_all(dir);
+}
+
+// A coarse-grained DEM needs its largest disc under the lifter; the forecast
+// wears the lifter to min_lifter_height_m, so it is refused at setup with the
+// largest coarse_grain that forecast allows (the DEM would otherwise refuse a
+// drive part-way through the life).
+TEST_CASE("a DEM forecast coarse-grained beyond the worn lifter is refused at setup", "[app][cli][input][dem]") {
+  const fs::path dir = temp_dir("coarse_forecast");
+  const std::string text = std::regex_replace(defaults_with("charge = \"layer\"", "charge = \"dem\""),
+                                              std::regex("\ncoarse_grain = [^\n]*"), "\ncoarse_grain = 1.5");
+  REQUIRE(text.find("\ncoarse_grain = 1.5") != std::string::npos);
+  write_file(dir / "coarse.toml", text);
+  const RunResult r = run_linerlife("forecast " + (dir / "coarse.toml").string() + " --quiet --json", 30);
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK(r.out.empty());
+  // the bundled balls are 0.1333 m, the relining height 0.075 m: no coarse-graining fits
+  CHECK_THAT(r.err, Catch::Contains((dir / "coarse.toml").string() + ":"));
+  CHECK_THAT(r.err, Catch::Contains("coarse_grain = 1.5: the largest coarse disc (0.2 m) is taller than the lifter"));
+  CHECK_THAT(r.err, Catch::Contains("min_lifter_height_m = 0.075 m"));
+  CHECK_THAT(r.err, Catch::Contains("coarse_grain <= 1 (1: none)"));
   fs::remove_all(dir);
 }
 
