@@ -145,8 +145,6 @@ FORECASTS = [
                                          "forecast": {"revolutions_per_drive": "2", "refresh_tol_m": "0.008"}}),
     ("dem, 2 revolutions, 8 mm", {"model": {"charge": '"dem"'},
                                   "forecast": {"revolutions_per_drive": "2", "refresh_tol_m": "0.008"}}),
-    ("dem coarse 1.8, 2 revolutions, 8 mm", {"model": {"charge": '"dem"'}, "dem": {"coarse_grain": "1.8"},
-                                             "forecast": {"revolutions_per_drive": "2", "refresh_tol_m": "0.008"}}),
 ]
 
 
