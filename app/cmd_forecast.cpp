@@ -118,7 +118,8 @@ int run_forecast_command(const ForecastOptions& o) {
   try {
     f = run_forecast(setup.input, *setup.provider, c.forecast, hooks);
   } catch (const InputError& e) {
-    // a criterion the start state already meets: point at its line, with its value
+    // input refused inside the forecast (a criterion the start state already
+    // meets): point at the key's line, with its value
     const std::string& key = e.key();
     const auto dot = key.find('.');
     const KeySpec* spec = dot == std::string::npos ? nullptr : config_schema().find(key.substr(0, dot), key.substr(dot + 1));

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "charge/dem/particle_set.h"
 #include "forecast/charge_wear_rate.h"
 #include "geometry/errors.h"
 #include "geometry/build_liner_surface.h"
@@ -41,7 +42,7 @@ ForecastSetup make_forecast_setup(const Config& c) {
   // Refuse it here, before any work.
   if (c.model.charge == "dem" && c.model.dem.coarse_grain > 1 && c.forecast.min_lifter_height_m > 0) {
     const double s = c.model.dem.coarse_grain;
-    const double dmax = std::max(c.charge.ball_diameter_m, c.model.dem.rock_diameter_max_m);
+    const double dmax = largest_real_diameter_m(c.charge, c.model.dem);
     const double h_end = c.forecast.min_lifter_height_m;
     if (s * dmax > h_end * (1 + 1e-9))
       throw InputError("dem.coarse_grain",

@@ -40,6 +40,13 @@ unsigned long long DemRandom::next() {
 
 double DemRandom::uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
 
+double largest_real_diameter_m(const ChargeSpec& charge, const DemSpec& spec) {
+  double d = charge.ball_filling > 0 ? charge.ball_diameter_m : 0.0;
+  if (charge.filling > charge.ball_filling)
+    d = std::max(d, spec.rock_diameter_max_m > 0 ? spec.rock_diameter_max_m : charge.ball_diameter_m);
+  return d;
+}
+
 ParticleSet make_particle_set(const ChargeSpec& charge, const DemSpec& spec, double free_area_m2,
                               unsigned long long seed) {
   ParticleSet ps;

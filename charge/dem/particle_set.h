@@ -28,6 +28,11 @@ struct ParticleSet {
   int size() const { return static_cast<int>(radius_m.size()); }
 };
 
+/// The largest real (not coarse-grained) disc diameter make_particle_set()
+/// draws for this charge: the ball diameter, or the largest rock where the
+/// charge has rocks (filling > ball_filling).
+double largest_real_diameter_m(const ChargeSpec& charge, const DemSpec& spec);
+
 /// Discs for `charge` in a mill whose free area (inside the liner) is
 /// free_area_m2 [m2]:
 ///  - the balls fill J_B free_area and the rocks (J - J_B) free_area as bulk

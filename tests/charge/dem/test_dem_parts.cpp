@@ -1,6 +1,7 @@
 // The pieces of the DEM model: the particle set (counts, mass scaling,
 // coarse-graining), the wall mesh (convex nodes, candidate grid) and the
 // indicator extraction from particle data on a charge of known shape.
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -71,6 +72,26 @@ TEST_CASE("coarse-graining by s: s times larger discs, s^2 fewer, the same mass"
   // the same seed gives the same set
   const ParticleSet b2 = make_particle_set(c, d, 0.45, 3);
   CHECK(b2.radius_m == b.radius_m);
+}
+
+TEST_CASE("the largest real disc is the one the particle set draws", "[dem][particles]") {
+  const auto largest_drawn = [](const ChargeSpec& c, const DemSpec& d) {
+    const ParticleSet ps = make_particle_set(c, d, 2.0, 5);
+    return *std::max_element(ps.real_diameter_m.begin(), ps.real_diameter_m.end());
+  };
+  ChargeSpec c;
+  c.filling = 0.3, c.ball_filling = 0.3, c.ball_diameter_m = 0.05, c.ball_density_kg_m3 = 7800;
+  c.ore_density_kg_m3 = 2700;
+  DemSpec d;
+  CHECK(largest_real_diameter_m(c, d) == 0.05);  // balls only
+  CHECK(largest_drawn(c, d) <= 0.05);
+  CHECK(largest_drawn(c, d) > 0.05 * (1 - d.ball_size_spread));
+  c.ball_filling = 0.1;  // a SAG charge: rocks up to the ball size by default
+  CHECK(largest_real_diameter_m(c, d) == 0.05);
+  d.rock_diameter_max_m = 0.08;
+  CHECK(largest_real_diameter_m(c, d) == 0.08);
+  CHECK(largest_drawn(c, d) <= 0.08);
+  CHECK(largest_drawn(c, d) > 0.06);  // the coarsest rock class runs up to it
 }
 
 TEST_CASE("wall mesh: convex nodes, merged shallow concave nodes, a complete candidate grid", "[dem][walls]") {
