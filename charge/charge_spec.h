@@ -43,6 +43,9 @@ struct ModelSpec {
   double hf_lift_angle_deg = 45.0;      // [deg] lift angle alpha of the Hogg-Fuerstenau power figure
   double max_courant = 0;               // [-] studies only: shell travel per step / media diameter allowed
                                         //     before sub-stepping (0: the model's own limit)
+  bool incremental_maps = true;         // tests only: false makes every column map, support sweep and
+                                        //     relaxation pass of the layer model a full one (the reference
+                                        //     its incremental bookkeeping must reproduce exactly)
   DemSpec dem;                    // the [dem] section: parameters of the DEM model
 };
 

@@ -340,6 +340,7 @@ class LayerSim {
   double t_sup_ = 0;                        // [s] time of the last support sweep
   bool maps_ready_ = false;                 // changes are noted from the start of the run
   bool col_full_ = true, sup_full_ = true;  // the next map / sweep is a full one
+  bool incremental_ = true;                 // false: every map, sweep and relaxation pass is a full one (tests)
   std::vector<char> col_dirty_;             // per outer slot
   std::vector<int> col_dirty_list_;
   std::vector<char> sup_dirty_;             // per slot (occ_ indexing)
@@ -353,6 +354,7 @@ class LayerSim {
   double skip_H_ = 0;                       // [s] longest skip of a flight past the charge
   double r_open_min_ = 0;                   // [m] no element is ever inside this radius
   std::vector<double> cos0_, sin0_;         // direction of outer slot s relative to slot 0
+  std::vector<double> cos_delta_, sin_delta_;  // cos, sin of each layer's slot angle delta_j
   std::vector<double> col_mass_, col_centrifugal_;  // [kg/m], [N/m] of a column n layers high
   // snapshots
   std::vector<ChargeSnapshot> snaps_;
@@ -1233,7 +1235,11 @@ bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out) {
   if (!past && !repose && (k == 0 || L_[k].held)) return false;  // nothing can move it
   bool found = false;
   double best_y = y;
+  // a neighbouring column is a target only by the past or the repose rule
+  // (an unheld top on the rising side short of its flight angle can only
+  // fall over an overhang, below)
   for (double dir : {-1.0, 1.0}) {
+    if (!past && !repose) break;
     if (past && dir > 0) continue;  // past the flight angle: only down the rising side
     const double thn = th + dir * L_[k].delta;
     occ(k, s) = -1;  // the neighbouring column without this element
@@ -1294,7 +1300,7 @@ void LayerSim::relax_surface(double tau) {
   relax_cur_.assign(S0, 0);
   relax_next_.assign(S0, 0);
   window_extreme(col_, relax_reach_, false, colmin_);
-  for (int s = 0; s < S0; ++s) relax_cur_[s] = relax_candidate(s, tau);
+  for (int s = 0; s < S0; ++s) relax_cur_[s] = !incremental_ || relax_candidate(s, tau);
   auto mark = [&](int c) {
     if (2 * relax_reach_ + 1 >= S0) {  // the reach covers the ring
       std::fill(relax_cur_.begin(), relax_cur_.end(), 1);
@@ -1339,52 +1345,71 @@ void LayerSim::relax_surface(double tau) {
     if (moved == 0) break;
     std::swap(relax_cur_, relax_next_);
     std::fill(relax_next_.begin(), relax_next_.end(), 0);
+    if (!incremental_) std::fill(relax_cur_.begin(), relax_cur_.end(), 1);
   }
 }
 
 bool LayerSim::relax_candidate(int s, double tau) const {
   // Whether the top of the column above outer cell s may roll, from the
   // fresh column map at tau. Conservative: false only where roll_target()
-  // must return false. Bounds used: at any angle within relax_reach_ outer
-  // cells of s the top found by ncol() is at least the smallest column
-  // height h_min there (every cell of layer j < h_min is occupied at the
-  // outer-cell centres, and each cell of layer j contains one of them), so a
-  // cell an element could roll into lies between the radii of layers h_min
-  // and n_open - 1.
+  // must return false for that top.
   const int h = col_[s];  // = ncol() at the centre of cell s: the map is fresh
   if (h == 0) return false;
   const int k = h - 1;
-  double c, sn;
-  slot_dir(0, s, tau, c, sn);
-  // the top's slot is within half its cell plus half an outer cell of the
-  // column's centre: allow that much angle (sin and cos change no faster)
-  const double tol = L_[k].delta + L_[0].delta;
-  if (c > -tol && sn > sin_fa_[k] - tol) return true;  // past the flight angle
-  if (k == 0 || L_[k].held) return false;              // only the past rule moves these
+  // Bounds used below: at any angle within relax_reach_ outer cells of s the
+  // top found by ncol() is at least the smallest column height h_min there
+  // (every cell of layer j < h_min is occupied at the outer-cell centres, and
+  // each cell of layer j contains one of them), so a cell an element could
+  // roll into lies between the radii of layers h_min and n_open - 1.
   const int h_min = std::min(n_open_, colmin_[s]);  // over s +- relax_reach_
-  // an overhang: the point one diameter below the top lies in the top's ring
-  // or outside it while sin(theta) <= 0.3, where every column within reach
-  // at least as tall as this one fills it; above that it may reach into the
-  // next ring, which only a column shorter than n_open leaves room in
-  if (h_min < h || (sn > 0.3 && h < n_open_)) return true;
-  if (c >= tol) return false;  // the rising side: no repose rule
-  // the toe side, repose: the lowest and nearest a neighbouring free cell
-  // can be against the angle-of-repose line through the top
-  if (h_min >= n_open_) return false;  // full columns all round: nowhere to roll
+  const bool unheld = k > 0 && !L_[k].held;         // only the past rule moves the others
+  // A first look from the direction of the column's centre (cheap): the
+  // top's slot is within half its cell plus half an outer cell of it, so
+  // allow that much angle (sin and cos change no faster).
+  {
+    double c, sn;
+    slot_dir(0, s, tau, c, sn);
+    const double tol = L_[k].delta + L_[0].delta;
+    const bool past = c > -tol && sn > sin_fa_[k] - tol;
+    // an overhang: see below
+    const bool overhang = unheld && (h_min < h || (sn > 0.3 - tol && h < n_open_));
+    const bool repose = unheld && c < tol && h_min < n_open_;
+    if (!past && !overhang && !repose) return false;
+  }
+  // the top itself: the cell ncol() and slot_of() find at the column's
+  // centre, as relax_surface() takes it; the past and overhang tests below
+  // are roll_target()'s own, evaluated exactly as there
   const double th = slot_angle(0, s, tau);
   const int st = slot_of(k, th, tau);
   double ct, stp;
   slot_dir(k, st, tau, ct, stp);
+  if (ct > 0 && stp > sin_fa_[k]) return true;  // past the flight angle
+  if (!unheld) return false;
   const double x = L_[k].r * ct, y = L_[k].r * stp;
+  // an overhang. While sin(theta) <= 0.3 the point one diameter below the
+  // top lies in the top's ring or outside it, where every column within
+  // reach at least as tall as this one fills it; above that it may reach
+  // into the next ring, which only a column shorter than n_open leaves room
+  // in. Where these bounds leave it open, roll_target()'s own test decides
+  // (the point below in an empty cell), evaluated exactly as there.
+  if (h_min < h || (stp > 0.3 && h < n_open_)) {
+    const V q(x, y - d_);
+    if (!inside_charge(q, q.norm(), fast_atan2(q.y(), q.x()), tau)) return true;
+  }
+  if (ct >= 0) return false;  // the rising side: no repose rule
+  // the toe side, repose: the lowest and nearest a neighbouring free cell
+  // can be against the angle-of-repose line through the top
+  if (h_min >= n_open_) return false;  // full columns all round: nowhere to roll
   const double r_out = L_[h_min].r, r_in = L_[n_open_ - 1].r;
-  const double tht = std::atan2(stp, ct);
+  // the neighbouring cells' directions, the top's turned by -+ delta_k (a
+  // little slack for the rounding of the rotation)
+  const double cd = cos_delta_[k], sd = sin_delta_[k];
   for (double dir : {-1.0, 1.0}) {
-    const double thn = tht + dir * L_[k].delta;
-    const double cn = std::cos(thn), snn = std::sin(thn);
+    const double cn = ct * cd - dir * stp * sd, snn = stp * cd + dir * ct * sd;
     const double y_low = std::min(r_out * snn, r_in * snn);
     const double x_a = std::min(r_out * cn, r_in * cn), x_b = std::max(r_out * cn, r_in * cn);
     const double run_min = x < x_a ? x_a - x : (x > x_b ? x - x_b : 0.0);
-    if (y_low < y && y - y_low > tan_g_ * run_min - 1e-12) return true;
+    if (y_low < y + 1e-9 && y - y_low > tan_g_ * run_min - 1e-9) return true;
   }
   return false;
 }
@@ -1423,7 +1448,7 @@ void LayerSim::support_sweep(double tau) {
           }))
         for (int s = 0; s < L_[j].S; ++s) mark_sup(j, s);
     }
-  sup_full_ = false;
+  sup_full_ = !incremental_;
   moved_.clear();
   for (int j = 1; j < n_open_; ++j) {
     const Layer& l = L_[j];
@@ -1556,7 +1581,7 @@ void LayerSim::update_columns(double tau, bool window) {
   }
   for (const int s : col_dirty_list_) col_dirty_[s] = 0;
   col_dirty_list_.clear();
-  col_full_ = false;
+  col_full_ = !incremental_;
   t_map_ = tau;
   if (!window) return;
   window_extreme(col_, col_m_, true, colwin_);
@@ -1777,6 +1802,7 @@ ChargeResult LayerSim::run() {
   col_dirty_list_.clear();
   sup_dirty_.assign(occ_.size(), 0);
   sup_dirty_list_.assign(n_open_, {});
+  incremental_ = in_.model.incremental_maps;
   col_full_ = sup_full_ = true;
   maps_ready_ = true;
   r_open_min_ = R_eff_ - n_open_ * d_;
@@ -1786,6 +1812,12 @@ ChargeResult LayerSim::run() {
   // can exceed half the ring: it is then the whole ring (relax_surface()
   // marks each column once).
   relax_reach_ = std::min(static_cast<int>(std::ceil(3.0 * L_[0].S / L_[n_open_ - 1].S)) + 1, L_[0].S / 2);
+  cos_delta_.resize(n_open_);
+  sin_delta_.resize(n_open_);
+  for (int j = 0; j < n_open_; ++j) {
+    cos_delta_[j] = std::cos(L_[j].delta);
+    sin_delta_[j] = std::sin(L_[j].delta);
+  }
   cos0_.resize(L_[0].S);
   sin0_.resize(L_[0].S);
   for (int s = 0; s < L_[0].S; ++s) {

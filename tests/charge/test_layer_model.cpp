@@ -2,14 +2,17 @@
 // independence of the element ordering, time-step convergence against a finer
 // run, the effect of a worn lifter, the versions, and refused input.
 #include <cmath>
+#include <string>
 
 #include <catch2/catch.hpp>
 
+#include "bench/worn_profiles.h"
 #include "charge/canonical_surface.h"
 #include "charge/morrell_c_model.h"
 #include "charge/slurry_drag.h"
 #include "fixtures.h"
 #include "geometry/errors.h"
+#include "geometry/measured_profile.h"
 #include "geometry/metrics.h"
 
 using namespace linerlife;
@@ -276,4 +279,44 @@ TEST_CASE("the layer model refuses input it cannot take", "[charge][layer][input
   refused([](ChargeInput& in) { in.model.slurry_drag = true; }, "model.slurry_drag");
   refused([](ChargeInput& in) { in.revolutions = -1; }, "--revolutions");
   refused([](ChargeInput& in) { in.charge.ball_diameter_m = 0.2; }, "charge.ball_diameter_m");
+}
+
+TEST_CASE("the incremental maps and relaxation reproduce full sweeps exactly", "[charge][layer]") {
+  // docs/models/layer.md §Incremental maps: the column map, the support
+  // sweep and the surface relaxation only look at what may have changed; with
+  // model.incremental_maps = false every one of them is a full sweep. The two
+  // must give the same run, bit for bit: on the Qiu mill, on its liner worn by
+  // a forecast (wide cells of the partial layer, the longest relaxation
+  // reach), on a pilot mill and on a clockwise one.
+  auto same = [](ChargeInput in) {
+    in.model.incremental_maps = true;
+    const ChargeResult a = run_model("layer", in);
+    in.model.incremental_maps = false;
+    const ChargeResult b = run_model("layer", in);
+    CHECK(a.indicators.toe_deg == b.indicators.toe_deg);
+    CHECK(a.indicators.shoulder_deg == b.indicators.shoulder_deg);
+    CHECK(a.indicators.net_power_kw == b.indicators.net_power_kw);
+    CHECK(a.indicators.alt_net_power_kw == b.indicators.alt_net_power_kw);
+    CHECK(a.indicators.com_radius_m == b.indicators.com_radius_m);
+    CHECK(a.stats.flights == b.stats.flights);
+    REQUIRE(a.loads.impacts.size() == b.loads.impacts.size());
+    CHECK(a.loads.normal_force_n_per_m == b.loads.normal_force_n_per_m);
+    CHECK(a.loads.shear_work_rate_w_per_m == b.loads.shear_work_rate_w_per_m);
+  };
+  const Config q = load_default_config();
+  SECTION("Qiu, new liner") { same(charge_input(q, build_liner_surface(q.mill, q.liner), 1, 1)); }
+  SECTION("Qiu, worn liner") {
+    const MeasuredProfile p =
+        load_profile_csv(std::string(LINERLIFE_SOURCE_DIR) + "/tests/charge/data/qiu_worn_8659h.csv");
+    const LinerSurface s = bench::ring_of(
+        q.mill.shell_radius_m(), q.liner.segments,
+        measured_profile_to_segment(p, q.mill.shell_radius_m(), q.liner.segments, q.liner.element_size_m));
+    same(charge_input(q, s, 1, 1));
+  }
+  SECTION("pilot test 12, and clockwise") {
+    Config c = mill_config("pilot_test_12.toml");
+    same(charge_input(c, build_liner_surface(c.mill, c.liner), 1, 1));
+    c.mill.rotation = c.mill.rotation == Rotation::Cw ? Rotation::Ccw : Rotation::Cw;
+    same(charge_input(c, build_liner_surface(c.mill, c.liner), 1, 1));
+  }
 }
