@@ -1,4 +1,4 @@
-// bench_layer_settle [REVOLUTIONS] [FILTER]: how many settling revolutions the
+// bench_layer_settle [REVOLUTIONS] [FILTER] [PHASES]: how many settling revolutions the
 // layer model needs (docs/models/layer.md §Settling). The model starts from
 // the N lowest cells filled and runs `model.settle_revolutions` (default 3)
 // before it averages. For every case of the real-time study (the Qiu mill,
@@ -10,7 +10,8 @@
 // the liner (abrasion's driver) and impact energy rate (impact's driver). A
 // window is "settled" when each output lies within the range of the ten
 // settled windows widened by a quarter of that range on each side. Prints
-// one Markdown row per case.
+// one Markdown row per case. PHASES is `[model] initial_phases` ("aligned",
+// the default, or "staggered").
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -44,10 +45,12 @@ int main(int argc, char** argv) {
   return bench::guarded_main([&] {
     const double revs = argc > 1 ? std::stod(argv[1]) : 2.0;
     const std::string filter = argc > 2 ? argv[2] : "";
+    const std::string phases = argc > 3 ? argv[3] : "aligned";
     const std::vector<double> settles = {0.5, 1.0, 2.0, 3.0};
     const auto model = find_charge_model("layer").make();
-    fmt::print("averaging over {} revolutions; settled spread from windows starting at 6, 8, .., 24 revolutions\n\n",
-               revs);
+    fmt::print("averaging over {} revolutions; settled spread from windows starting at 6, 8, .., 24 revolutions; "
+               "initial phases {}\n\n",
+               revs, phases);
     fmt::print("| case |");
     for (double s : settles) fmt::print(" settle {} |", s);
     fmt::print(" settled range: power [%] / toe, shoulder [deg] / shear, impact [%] |\n|---|");
@@ -63,6 +66,7 @@ int main(int argc, char** argv) {
         auto run = [&](double settle) {
           ChargeInput in = bench::make_input(c.config, s, "layer", "", revs);
           in.model.settle_revolutions = settle;
+          in.model.initial_phases = phases;
           return outputs(model->run(in));
         };
         std::vector<double> lo(kOutputs, 1e300), hi(kOutputs, -1e300), mean(kOutputs, 0.0);

@@ -40,6 +40,8 @@ struct ModelSpec {
   bool slurry_drag = false;             // drag of the slurry pool on flights (overflow mills only)
   bool lifter_slide = false;            // balls slide out along the lifter face before flying (Powell 1991)
   double settle_revolutions = 3.0;      // [-] revolutions run before averaging starts
+  std::string initial_phases = "aligned";  // layer model at t = 0: "aligned" (slot 0 of every layer at angle 0)
+                                           //     | "staggered" (docs/models/layer.md §Settling)
   double hf_lift_angle_deg = 45.0;      // [deg] lift angle alpha of the Hogg-Fuerstenau power figure
   double max_courant = 0;               // [-] studies only: shell travel per step / media diameter allowed
                                         //     before sub-stepping (0: the model's own limit)

@@ -678,7 +678,7 @@ void LayerSim::setup_initial_fill() {
   std::vector<Cell> cells;
   for (int j = 0; j < n_open_; ++j)
     for (int s = 0; s < L_[j].S; ++s) {
-      const double th = s * L_[j].delta;
+      const double th = L_[j].phase + s * L_[j].delta;
       cells.push_back({L_[j].r * std::sin(th), th, j, s});
     }
   std::sort(cells.begin(), cells.end(), [](const Cell& x, const Cell& y) {
@@ -1758,6 +1758,19 @@ ChargeResult LayerSim::run() {
   const auto wall0 = std::chrono::steady_clock::now();
   setup_geometry();
   setup_layers();
+  // Phases at t = 0 (docs/models/layer.md §Settling): "aligned" puts slot 0
+  // of every layer at angle 0, so the cells of all layers line up radially
+  // there, a lattice the layers' slip only slowly undoes; "staggered" turns
+  // layer j by the fractional part of (j + 1) / golden ratio of its slot
+  // angle, offsets that no two layers share.
+  if (in_.model.initial_phases == "staggered")
+    for (size_t j = 0; j < L_.size(); ++j) {
+      const double f = (static_cast<double>(j) + 1.0) * 0.6180339887498949;
+      L_[j].phase = phase0_[j] = (f - std::floor(f)) * L_[j].delta;
+    }
+  else if (in_.model.initial_phases != "aligned")
+    throw InputError("model.initial_phases",
+                     fmt::format("initial_phases = \"{}\": allowed \"aligned\" or \"staggered\"", in_.model.initial_phases));
   setup_initial_fill();
   // time step: sub-step a step the model cannot take (docs/models/layer.md §Time step)
   const double courant = in_.model.max_courant > 0 ? in_.model.max_courant : kLayerMaxCourant;
