@@ -390,6 +390,9 @@ LayerSim::LayerSim(const ChargeInput& in) : in_(in) {
   if (!(in.revolutions >= 0)) throw InputError("--revolutions", fmt::format("revolutions = {}: must be >= 0", in.revolutions));
   if (!(ms.settle_revolutions >= 0))
     throw InputError("model.settle_revolutions", fmt::format("settle_revolutions = {}: must be >= 0", ms.settle_revolutions));
+  if (ms.initial_phases != "aligned" && ms.initial_phases != "staggered")
+    throw InputError("model.initial_phases",
+                     fmt::format("initial_phases = \"{}\": allowed \"aligned\" or \"staggered\"", ms.initial_phases));
   if (ms.slurry_drag && c.discharge != Discharge::Overflow)
     throw InputError("model.slurry_drag", "slurry_drag = \"on\" needs an overflow mill ([mill] discharge = \"overflow\"): a grate mill has no slurry pool");
   parse_slip_law(ms.slip_model);  // refuses unknown names
@@ -1362,7 +1365,9 @@ bool LayerSim::relax_candidate(int s, double tau) const {
   // each cell of layer j contains one of them), so a cell an element could
   // roll into lies between the radii of layers h_min and n_open - 1.
   const int h_min = std::min(n_open_, colmin_[s]);  // over s +- relax_reach_
-  const bool unheld = k > 0 && !L_[k].held;         // only the past rule moves the others
+  // a held top moves only by the past rule; an unheld one also by repose
+  // and (above the outer layer) over an overhang, as in roll_target()
+  const bool unheld = !L_[k].held;
   // A first look from the direction of the column's centre (cheap): the
   // top's slot is within half its cell plus half an outer cell of it, so
   // allow that much angle (sin and cos change no faster).
@@ -1372,7 +1377,7 @@ bool LayerSim::relax_candidate(int s, double tau) const {
     const double tol = L_[k].delta + L_[0].delta;
     const bool past = c > -tol && sn > sin_fa_[k] - tol;
     // an overhang: see below
-    const bool overhang = unheld && (h_min < h || (sn > 0.3 - tol && h < n_open_));
+    const bool overhang = k > 0 && unheld && (h_min < h || (sn > 0.3 - tol && h < n_open_));
     const bool repose = unheld && c < tol && h_min < n_open_;
     if (!past && !overhang && !repose) return false;
   }
@@ -1392,7 +1397,7 @@ bool LayerSim::relax_candidate(int s, double tau) const {
   // into the next ring, which only a column shorter than n_open leaves room
   // in. Where these bounds leave it open, roll_target()'s own test decides
   // (the point below in an empty cell), evaluated exactly as there.
-  if (h_min < h || (stp > 0.3 && h < n_open_)) {
+  if (k > 0 && (h_min < h || (stp > 0.3 && h < n_open_))) {
     const V q(x, y - d_);
     if (!inside_charge(q, q.norm(), fast_atan2(q.y(), q.x()), tau)) return true;
   }
@@ -1401,13 +1406,16 @@ bool LayerSim::relax_candidate(int s, double tau) const {
   // can be against the angle-of-repose line through the top
   if (h_min >= n_open_) return false;  // full columns all round: nowhere to roll
   const double r_out = L_[h_min].r, r_in = L_[n_open_ - 1].r;
-  // the neighbouring cells' directions, the top's turned by -+ delta_k (a
-  // little slack for the rounding of the rotation)
+  // The neighbouring directions are the top's turned by -+ delta_k; the
+  // centre of the cell roll_target() finds there is up to half that cell's
+  // angle further, at most sl along the arc (the innermost open layer has
+  // the widest cells). A little slack for the rounding of the rotation.
+  const double sl = 0.5 * r_out * L_[n_open_ - 1].delta;
   const double cd = cos_delta_[k], sd = sin_delta_[k];
   for (double dir : {-1.0, 1.0}) {
     const double cn = ct * cd - dir * stp * sd, snn = stp * cd + dir * ct * sd;
-    const double y_low = std::min(r_out * snn, r_in * snn);
-    const double x_a = std::min(r_out * cn, r_in * cn), x_b = std::max(r_out * cn, r_in * cn);
+    const double y_low = std::min(r_out * snn, r_in * snn) - sl;
+    const double x_a = std::min(r_out * cn, r_in * cn) - sl, x_b = std::max(r_out * cn, r_in * cn) + sl;
     const double run_min = x < x_a ? x_a - x : (x > x_b ? x - x_b : 0.0);
     if (y_low < y + 1e-9 && y - y_low > tan_g_ * run_min - 1e-9) return true;
   }
@@ -1768,9 +1776,6 @@ ChargeResult LayerSim::run() {
       const double f = (static_cast<double>(j) + 1.0) * 0.6180339887498949;
       L_[j].phase = phase0_[j] = (f - std::floor(f)) * L_[j].delta;
     }
-  else if (in_.model.initial_phases != "aligned")
-    throw InputError("model.initial_phases",
-                     fmt::format("initial_phases = \"{}\": allowed \"aligned\" or \"staggered\"", in_.model.initial_phases));
   setup_initial_fill();
   // time step: sub-step a step the model cannot take (docs/models/layer.md §Time step)
   const double courant = in_.model.max_courant > 0 ? in_.model.max_courant : kLayerMaxCourant;

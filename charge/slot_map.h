@@ -72,10 +72,13 @@ class SlotMap {
   }
 
   /// Calls f(s) for every upper cell s that may lie over lower cell k at
-  /// offset b (a superset: one extra cell each side).
+  /// offset b (a superset: one extra cell each side). b + s ratio runs up to
+  /// b + S_b - ratio < 2 S_b + 1/2, so cell k is reached at k, k + S_b and
+  /// (for b > S_b, when the lower ring's cells are more than twice as wide)
+  /// k + 2 S_b.
   template <class F>
   void over(int k, double b, F&& f) const {
-    for (int K : {k, k + S_b_}) {
+    for (int K : {k, k + S_b_, k + 2 * S_b_}) {
       const int lo = static_cast<int>(std::ceil((K - b) / ratio_)) - 1;
       const int hi = static_cast<int>(std::floor((K + 1 - b) / ratio_)) + 1;
       for (int s = std::max(lo, 0); s <= std::min(hi, S_a_ - 1); ++s) f(s);

@@ -1,6 +1,7 @@
 // The layer model (docs/models/layer.md): conservation, geometry, symmetry,
 // independence of the element ordering, time-step convergence against a finer
-// run, the effect of a worn lifter, the versions, and refused input.
+// run, the effect of a worn lifter, the versions, refused input, the
+// incremental bookkeeping against full sweeps, and staggered initial phases.
 #include <cmath>
 #include <string>
 
@@ -300,8 +301,13 @@ TEST_CASE("the incremental maps and relaxation reproduce full sweeps exactly", "
     CHECK(a.indicators.com_radius_m == b.indicators.com_radius_m);
     CHECK(a.stats.flights == b.stats.flights);
     REQUIRE(a.loads.impacts.size() == b.loads.impacts.size());
+    for (size_t i = 0; i < a.loads.impacts.size(); ++i) {
+      CHECK(a.loads.impacts[i].element == b.loads.impacts[i].element);
+      CHECK(a.loads.impacts[i].normal_speed_m_s == b.loads.impacts[i].normal_speed_m_s);
+    }
     CHECK(a.loads.normal_force_n_per_m == b.loads.normal_force_n_per_m);
     CHECK(a.loads.shear_work_rate_w_per_m == b.loads.shear_work_rate_w_per_m);
+    CHECK(a.indicators.lifter_normal_force_n_per_m == b.indicators.lifter_normal_force_n_per_m);
   };
   const Config q = load_default_config();
   SECTION("Qiu, new liner") { same(charge_input(q, build_liner_surface(q.mill, q.liner), 1, 1)); }
@@ -319,6 +325,27 @@ TEST_CASE("the incremental maps and relaxation reproduce full sweeps exactly", "
     c.mill.rotation = c.mill.rotation == Rotation::Cw ? Rotation::Ccw : Rotation::Cw;
     same(charge_input(c, build_liner_surface(c.mill, c.liner), 1, 1));
   }
+  // cases a review found the bookkeeping wrong in (2026-12-01): a partial
+  // layer of a few cells more than twice as wide as the outer ring's (the
+  // column map's offset wrapping twice), and a plain plate (an unheld outer
+  // layer, whose top rolls by the repose rule)
+  SECTION("pilot test 4 at 1.25 x its speed") {
+    Config c = mill_config("pilot_test_04.toml");
+    c.mill.speed_rpm *= 1.25;
+    same(charge_input(c, build_liner_surface(c.mill, c.liner), 2, 3));
+  }
+  SECTION("pilot test 8, staggered phases") {
+    const Config c = mill_config("pilot_test_08.toml");
+    const LinerSurface s = build_liner_surface(c.mill, c.liner);
+    ChargeInput in = charge_input(c, s, 2, 3);
+    in.model.initial_phases = "staggered";
+    same(in);
+  }
+  SECTION("pilot test 4 on a plain plate") {
+    Config c = mill_config("pilot_test_04.toml");
+    c.liner.design.lifter_height_m = 0;
+    same(charge_input(c, build_liner_surface(c.mill, c.liner), 1, 1));
+  }
 }
 
 TEST_CASE("staggered initial phases change the start, not the settled charge", "[charge][layer]") {
@@ -329,6 +356,7 @@ TEST_CASE("staggered initial phases change the start, not the settled charge", "
   const Config c = mill_config("pilot_test_10.toml");
   const LinerSurface s = build_liner_surface(c.mill, c.liner);
   ChargeInput in = charge_input(c, s, 12, 1);
+  in.model.initial_phases = "aligned";
   const ChargeResult a = run_model("layer", in);
   in.model.initial_phases = "staggered";
   const ChargeResult b = run_model("layer", in);

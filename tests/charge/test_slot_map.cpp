@@ -51,11 +51,13 @@ TEST_CASE("SlotMap::changed refuses a step too large to be reliable", "[charge][
 TEST_CASE("SlotMap::over returns every upper cell over a lower cell", "[charge][slot_map]") {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> U(0.0, 1.0);
-  for (const auto& sz : {std::pair<int, int>{250, 246}, {41, 60}, {60, 41}}) {
+  // the last two: a partial inner layer of a few wide cells under the outer
+  // ring (ratio < 1/2), where b + s ratio wraps twice for b > S_b
+  for (const auto& sz : {std::pair<int, int>{250, 246}, {41, 60}, {60, 41}, {232, 4}, {232, 46}}) {
     const int Sa = sz.first, Sb = sz.second;
     const SlotMap map(Sa, Sb, static_cast<double>(Sb) / Sa);
     for (int trial = 0; trial < 200; ++trial) {
-      const double b = 0.5 + U(rng) * Sb;
+      const double b = trial < 20 ? Sb + 0.5 * U(rng) : 0.5 + U(rng) * Sb;
       for (int k = 0; k < Sb; ++k) {
         std::set<int> got;
         map.over(k, b, [&](int s) { got.insert(s); });
