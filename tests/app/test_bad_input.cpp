@@ -299,6 +299,20 @@ TEST_CASE("a DEM forecast coarse-grained beyond the worn lifter is refused at se
   fs::remove_all(dir);
 }
 
+TEST_CASE("an unknown layer-model start is refused naming the key, value and the allowed ones", "[app][cli][input]") {
+  const fs::path dir = temp_dir("initial_phases");
+  write_file(dir / "phases.toml", defaults_with("initial_phases = ", "initial_phases = \"random\""));
+  const RunResult r = run_linerlife("charge " + (dir / "phases.toml").string() + " --json", 30);
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK(r.out.empty());
+  CHECK_THAT(r.err, Catch::Contains((dir / "phases.toml").string() + ":"));
+  CHECK_THAT(r.err, Catch::Contains("initial_phases"));
+  CHECK_THAT(r.err, Catch::Contains("random"));
+  CHECK_THAT(r.err, Catch::Contains("staggered"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("an output folder that cannot be written, or a checkpoint that is not one, is refused before any work",
           "[app][cli][input]") {
   const fs::path dir = temp_dir("bad_out");

@@ -15,6 +15,7 @@
 #include "geometry/errors.h"
 #include "geometry/measured_profile.h"
 #include "geometry/metrics.h"
+#include "tests/charge/same_run.h"
 
 using namespace linerlife;
 using namespace linerlife::test;
@@ -294,20 +295,7 @@ TEST_CASE("the incremental maps and relaxation reproduce full sweeps exactly", "
     const ChargeResult a = run_model("layer", in);
     in.model.incremental_maps = false;
     const ChargeResult b = run_model("layer", in);
-    CHECK(a.indicators.toe_deg == b.indicators.toe_deg);
-    CHECK(a.indicators.shoulder_deg == b.indicators.shoulder_deg);
-    CHECK(a.indicators.net_power_kw == b.indicators.net_power_kw);
-    CHECK(a.indicators.alt_net_power_kw == b.indicators.alt_net_power_kw);
-    CHECK(a.indicators.com_radius_m == b.indicators.com_radius_m);
-    CHECK(a.stats.flights == b.stats.flights);
-    REQUIRE(a.loads.impacts.size() == b.loads.impacts.size());
-    for (size_t i = 0; i < a.loads.impacts.size(); ++i) {
-      CHECK(a.loads.impacts[i].element == b.loads.impacts[i].element);
-      CHECK(a.loads.impacts[i].normal_speed_m_s == b.loads.impacts[i].normal_speed_m_s);
-    }
-    CHECK(a.loads.normal_force_n_per_m == b.loads.normal_force_n_per_m);
-    CHECK(a.loads.shear_work_rate_w_per_m == b.loads.shear_work_rate_w_per_m);
-    CHECK(a.indicators.lifter_normal_force_n_per_m == b.indicators.lifter_normal_force_n_per_m);
+    check_same_run(a, b);
   };
   const Config q = load_default_config();
   SECTION("Qiu, new liner") { same(charge_input(q, build_liner_surface(q.mill, q.liner), 1, 1)); }

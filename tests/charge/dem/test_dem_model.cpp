@@ -9,6 +9,7 @@
 #include "charge/dem/dem_model.h"
 #include "geometry/build_liner_surface.h"
 #include "geometry/errors.h"
+#include "tests/charge/same_run.h"
 
 using namespace linerlife;
 
@@ -143,15 +144,7 @@ TEST_CASE("dem runs repeat exactly for a seed, on one thread or two", "[dem][mod
     const ChargeResult& a = ref;
     const ChargeResult b = run_dem(p.in);
     INFO(threads << " threads");
-    CHECK(a.indicators.net_power_w_per_m == b.indicators.net_power_w_per_m);
-    CHECK(a.indicators.toe_deg == b.indicators.toe_deg);
-    CHECK(a.loads.normal_force_n_per_m == b.loads.normal_force_n_per_m);
-    CHECK(a.loads.shear_work_rate_w_per_m == b.loads.shear_work_rate_w_per_m);
-    REQUIRE(a.loads.impacts.size() == b.loads.impacts.size());
-    for (size_t k = 0; k < a.loads.impacts.size(); ++k) {
-      CHECK(a.loads.impacts[k].element == b.loads.impacts[k].element);
-      CHECK(a.loads.impacts[k].normal_speed_m_s == b.loads.impacts[k].normal_speed_m_s);
-    }
+    test::check_same_run(a, b);
   }
   // another seed gives another (but similar) run
   Pilot p;
