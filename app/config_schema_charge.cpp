@@ -105,12 +105,12 @@ void add_model_keys(Schema& s) {
                               [](const Config& c) { return std::string(c.model.slurry_drag ? "on" : "off"); }));
   s.keys.push_back(real_key("model", "settle_revolutions", "-",
                             "Mill revolutions run before the averaging starts (docs/models/layer.md)", 0.0, 100.0,
-                            false, false, 3.0, [](Config& c, double v) { c.model.settle_revolutions = v; },
+                            false, false, 1.0, [](Config& c, double v) { c.model.settle_revolutions = v; },
                             [](const Config& c) { return c.model.settle_revolutions; }));
   s.keys.push_back(string_key("model", "initial_phases",
                               "Layer model at t = 0: slot 0 of every layer at angle 0 (aligned), or each layer "
                               "turned by a different fraction of its slot (staggered; docs/models/layer.md §Settling)",
-                              {"aligned", "staggered"}, "aligned",
+                              {"aligned", "staggered"}, "staggered",
                               [](Config& c, const std::string& v) { c.model.initial_phases = v; },
                               [](const Config& c) { return c.model.initial_phases; }));
   s.keys.push_back(real_key("model", "hf_lift_angle_deg", "deg",

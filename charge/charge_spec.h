@@ -39,9 +39,9 @@ struct ModelSpec {
   double repose_angle_deg = 35.0;       // [deg] dynamic angle of repose: foot stability and V-1.1 clipping
   bool slurry_drag = false;             // drag of the slurry pool on flights (overflow mills only)
   bool lifter_slide = false;            // balls slide out along the lifter face before flying (Powell 1991)
-  double settle_revolutions = 3.0;      // [-] revolutions run before averaging starts
-  std::string initial_phases = "aligned";  // layer model at t = 0: "aligned" (slot 0 of every layer at angle 0)
-                                           //     | "staggered" (docs/models/layer.md §Settling)
+  double settle_revolutions = 1.0;      // [-] revolutions run before averaging starts (docs/models/layer.md §Settling)
+  std::string initial_phases = "staggered";  // layer model at t = 0: "staggered" (each layer turned by a different
+                                             //     fraction of its slot) | "aligned" (slot 0 of every layer at angle 0)
   double hf_lift_angle_deg = 45.0;      // [deg] lift angle alpha of the Hogg-Fuerstenau power figure
   double max_courant = 0;               // [-] studies only: shell travel per step / media diameter allowed
                                         //     before sub-stepping (0: the model's own limit)
