@@ -1079,7 +1079,9 @@ void LayerSim::check_flights(double t1) {
       // the path up to the next event (at least one interval), then the
       // flight waits for its next interval or its landing
       double t_lim = events_.empty() ? t1 : std::min(t1, events_.front().t);
-      t_lim = std::max(t_lim, std::nextafter(next_check(f), kInf));
+      // at least one interval: check_flight() walks whole intervals, but
+      // check_flight_drag() ends one at t_lim, so it gets one drag step (1 ms)
+      t_lim = std::max(t_lim, drag_on_ ? next_check(f) + 1e-3 : std::nextafter(next_check(f), kInf));
       Landing l;
       if (check_flight(f, t_lim, l) && !f.landed) {  // check_flight_drag() reports its landing in `l` only
         f.landing = l;
