@@ -203,12 +203,6 @@ class LayerSim {
   void schedule_flight(int i);
   /// Where the flight's unchecked path starts.
   static double next_check(const Flight& f) { return std::max({f.t_next, f.t_check, f.t0}); }
-  /// The time up to which check_flight() has nothing to do for f: it
-  /// returns false for every t1 <= wake_time(f).
-  static double wake_time(const Flight& f) {
-    if (f.landed) return std::nextafter(f.landing.t, -kInf);
-    return std::max(f.t_next, f.t0);
-  }
   bool check_flight(Flight& f, double t1, Landing& out);
   bool check_flight_drag(Flight& f, double t1, Landing& out);
   /// First crossing into the liner over (tau, tb] of the path through pa with
@@ -320,7 +314,6 @@ class LayerSim {
   std::vector<double> elem_t_slot_;         // [s] since when it sits in its slot
   std::vector<double> phase0_;              // [rad] phase of each layer at t = 0 (the phase is phase0 + omega t)
   std::vector<Flight> flights_;
-  std::vector<double> flight_wake_;         // [s] per flight: check_flight() has nothing to do while t1 <= this
   std::vector<StepEvent> events_;
   double step_t1_ = 0;
   bool in_step_ = false;  // inside check_flights(): a launch schedules its flight
@@ -805,7 +798,6 @@ void LayerSim::launch(int j, int s, double tau, int seg, bool relaunch) {
     energy_ += m_ * (kGravity * (f.p0.y() - elem_y_entry_[id]) + 0.5 * f.v0.squaredNorm());
   ++n_flights_;
   flights_.push_back(f);
-  flight_wake_.push_back(wake_time(f));
   // A departure's flight is checked from its launch on (check_flights()). A
   // relaunch from a landing waits for the next step, as before the event
   // queue: an element that lands past its layer's flight angle against a
@@ -1134,10 +1126,8 @@ void LayerSim::check_flights(double t1) {
   for (const int i : gone_) {
     if (i != static_cast<int>(flights_.size()) - 1) {
       flights_[i] = flights_.back();
-      flight_wake_[i] = flight_wake_.back();
     }
     flights_.pop_back();
-    flight_wake_.pop_back();
   }
 }
 
@@ -1146,12 +1136,10 @@ void LayerSim::schedule_flight(int i) {
   // next interval
   const Flight& f = flights_[i];
   if (f.landed) {
-    flight_wake_[i] = wake_time(f);
     if (f.landing.t <= step_t1_) push_event({f.landing.t, kLand, i});
     return;
   }
   const double tc = next_check(f);
-  flight_wake_[i] = wake_time(f);
   if (tc < step_t1_) push_event({tc, kCheck, i});
 }
 
