@@ -124,6 +124,13 @@ ForecastResult run_forecast(const ForecastInput& in, RateProvider& rates, const 
 /// uniform liner, 2 for hi-lo).
 int pattern_period(const LinerSurface& s);
 
+/// The smallest projection of an element of `ring` on the same element of
+/// `base` (same node count; `ring` displaced from `base`), relative to that
+/// element's squared length, over elements -1 .. n_cell - 1: 1 for equal
+/// rings, 0 where an element has turned by 90 deg, negative where it has
+/// turned over. The forecast remeshes where it reaches 0.
+double min_element_projection(const LinerSurface& base, const LinerSurface& ring, int n_cell);
+
 /// Smoothing of element values along the closed surface, `passes` times: a
 /// flux-form 1-2-1 filter that keeps sum(length x value) exactly, keeps a
 /// uniform field uniform for any element lengths, and creates no new extrema.

@@ -330,3 +330,96 @@ TEST_CASE("a failing forecast hands back its partial results", "[forecast][failu
   CHECK(partial.history.size() >= 1);
   CHECK(partial.operating_hours > 0);
 }
+
+namespace {
+
+/// The largest turn [deg] between consecutive elements of the ring. A lifter
+/// profile turns by at most about 90 deg at a corner; an element that has
+/// turned over turns by far more against its neighbours.
+double max_turn_deg(const LinerSurface& s) {
+  double mx = 0;
+  for (int i = 0; i < s.n_elements(); ++i) {
+    const int a = s.prev(i);
+    const V u = s.nodes[s.next(a)] - s.nodes[a], w = s.nodes[s.next(i)] - s.nodes[i];
+    mx = std::max(mx, std::abs(std::atan2(u.x() * w.y() - u.y() * w.x(), u.dot(w))) * 180.0 / kPi);
+  }
+  return mx;
+}
+
+}  // namespace
+
+TEST_CASE("an element's projection on its former self: 1 unmoved, 0 turned 90 deg, negative turned over",
+          "[forecast][geometry]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  const int n = s.segment_begin[1];
+  CHECK(min_element_projection(s, s, n) == Approx(1.0).margin(1e-12));
+  // a uniform recession of a plain plate lengthens every chord by (R + d) / R
+  const LinerSurface plate = build_liner_surface(qiu(), liner(0));
+  const double d = 0.004, R = plate.nodes[0].norm();
+  const LinerSurface moved = displace_nodes(plate, std::vector<double>(static_cast<size_t>(plate.n_nodes()), d));
+  CHECK(min_element_projection(plate, moved, plate.segment_begin[1]) == Approx((R + d) / R).epsilon(1e-9));
+  // one node of element 5 moved past the other along the element: turned over
+  LinerSurface t = plate;
+  const V e = t.nodes[6] - t.nodes[5];
+  t.nodes[6] = t.nodes[5] - 0.5 * e;
+  CHECK(min_element_projection(plate, t, plate.segment_begin[1]) == Approx(-0.5).margin(1e-12));
+  t.nodes[6] = t.nodes[5] + V(-e.y(), e.x());  // turned by 90 deg
+  CHECK(min_element_projection(plate, t, plate.segment_begin[1]) == Approx(0.0).margin(1e-12));
+}
+
+/// The ring with a node added 1 mm from every convex corner of more than
+/// 45 deg, on the element after it: a short element at each crest corner, as
+/// a remesh can leave one (the bundled forecast's had elements of about 1 mm
+/// there).
+LinerSurface with_short_corner_elements(const LinerSurface& s) {
+  LinerSurface t = s;
+  t.nodes.clear();
+  t.segment_begin.assign(1, 0);
+  for (int k = 0; k < s.segments; ++k) {
+    for (int i = s.segment_begin[k]; i < s.segment_begin[k + 1]; ++i) {
+      t.nodes.push_back(s.nodes[i]);
+      const V u = s.nodes[i] - s.nodes[s.prev(i)], w = s.nodes[s.next(i)] - s.nodes[i];
+      const double turn = std::atan2(u.x() * w.y() - u.y() * w.x(), u.dot(w)) * 180.0 / kPi;
+      // the ring runs anticlockwise with the charge inside: a crest corner turns left
+      if (turn > 45 && i + 1 < s.segment_begin[k + 1]) t.nodes.push_back(s.nodes[i] + 0.001 * w.normalized());
+    }
+    t.segment_begin.push_back(static_cast<int>(t.nodes.size()));
+  }
+  t.finalize();
+  return t;
+}
+
+// A lifter with a 1 mm element at each crest corner, worn uniformly at the
+// top: the corner node recedes along the corner's bisector, the node 1 mm
+// along the top straight down, so after about 1.4 mm of wear the element
+// would turn over, long before the next remesh (every 5 mm). The forecast
+// remeshes where an element has turned by 90 deg: no ring the rate model is
+// given has an element turned over. Without that root the rings given had
+// turns of 180 deg (measured 2026-12-02).
+TEST_CASE("the forecast remeshes before an element of the displaced ring turns over", "[forecast][ode][geometry]") {
+  const LinerSurface s = with_short_corner_elements(build_liner_surface(qiu(), liner()));
+  const double turn0 = max_turn_deg(s);
+  REQUIRE(turn0 < 100);
+  REQUIRE(s.n_nodes() > build_liner_surface(qiu(), liner()).n_nodes());
+  const double r0 = 0.1 / (1000 * kHour);
+  double worst = 0;
+  int rings = 0;
+  auto p = field([&](const LinerSurface& x, int i) {
+    if (i == 0) {
+      worst = std::max(worst, max_turn_deg(x));
+      ++rings;
+    }
+    return thickness(x, i) > 0.075 + 0.12 ? r0 : 0.0;
+  });
+  ForecastSpec sp = base_spec();
+  sp.min_lifter_height_m = 0.22;  // 30 mm of the top
+  sp.refresh_tol_m = 0.0005;      // a look at the ring every half millimetre
+  const ForecastResult f = forecast(s, p, sp);
+  REQUIRE(f.criterion == "min_lifter_height");
+  CHECK(rings > 40);
+  INFO("largest turn between elements in the rings given to the rate model: " << worst << " deg (new liner "
+                                                                              << turn0 << ")");
+  CHECK(worst < 120);
+  // the top wears as without the short elements: 30 mm at r0
+  CHECK(f.operating_hours == Approx(300).epsilon(2e-3));
+}
