@@ -840,7 +840,11 @@ void Life::run_explicit(double dt_s, double revolutions, bool remesh_every_step)
     std::copy(g_new, g_new + 4, g_old);
     double ymax = 0;
     for (double v : y_) ymax = std::max(ymax, v);
-    if (remesh_every_step || ymax > remesh_depth_) do_remesh();
+    // as the ODE method's roots: the depth, and an element turned by 90 deg
+    // (checked after the step, so a turned element never reaches a drive)
+    if (remesh_every_step || ymax > remesh_depth_ ||
+        min_element_projection(cell_.base(), cell_.displaced(y_.data()), cell_.size()) <= 0)
+      do_remesh();
     while (t_ >= next_explicit_out_) {
       record(t_);
       next_explicit_out_ += spec_.output_interval_h * 3600.0;
