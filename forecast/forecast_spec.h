@@ -24,7 +24,7 @@ struct ForecastSpec {
   std::string rate_model = "frozen";  // between drives: "frozen" (rates of the last drive) | "secant" (linear in the path);
                                       // frozen by default: docs/validation/forecast.md (the secant amplifies drive noise)
   int rate_smoothing_passes = 2;     // conservative 1-2-1 passes over element rates along the surface
-  double revolutions_per_drive = 10;  // [rev] averaged per charge drive (docs/validation/forecast.md: 10 is within 0.1 % of 20)
+  double revolutions_per_drive = 10;  // [rev] averaged per charge drive (docs/validation/forecast.md: the mean life over realisations at 10 is within 0.2 % of 40)
   double remesh_depth_m = 0;         // [m] remesh once any node receded this far; 0: half the element size
   // end-of-life criteria: the first reached ends the life
   double min_lifter_height_m = 0.075;      // [m] above the plate
