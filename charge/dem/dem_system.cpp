@@ -481,6 +481,7 @@ void DemSystem::wall_forces(int t, bool first, const StepClock& clk) {
   const double ca = clk.c, sa = clk.s;
   const bool acc = accumulate_ && !first;
   const bool rec = clk.record;
+  const bool cross_check = !first;  // the first evaluation of a run follows no drift
   double wsum_x = 0, wsum_y = 0, elastic = 0;
   const PackedElement* __restrict pel = packed_.data();
   const int* __restrict cstart = d.wc_start.data();
@@ -494,6 +495,13 @@ void DemSystem::wall_forces(int t, bool first, const StepClock& clk) {
     const double px = x[i], py = y[i], ri = r[i];
     // Body frame: q = R(-angle) p.
     const double qx = ca * px + sa * py, qy = -sa * px + ca * py;
+    // The centre's body-frame move over this step, q - q(n-1): the drift was
+    // x(n) = x(n-1) + dt v(n-1/2) and vx_, vy_ still hold v(n-1/2).
+    double mx = 0, my = 0;
+    if (cross_check) {
+      const double ox = px - dt * vx_[i], oy = py - dt * vy_[i];
+      mx = qx - (clk.cp * ox + clk.sp * oy), my = qy - (-clk.sp * ox + clk.cp * oy);
+    }
     WallHit hits[8];
     int nh = 0;
     for (int k = cstart[idx], kend = cstart[idx + 1]; k < kend; ++k) {
@@ -501,18 +509,31 @@ void DemSystem::wall_forces(int t, bool first, const StepClock& clk) {
       const PackedElement& E = pel[e];
       const double dx = qx - E.ax, dy = qy - E.ay;
       const double sd = dx * E.nx + dy * E.ny;  // signed distance from the element's line
-      if (sd >= ri || sd <= -ri) continue;
       const double tt = dx * E.ux + dy * E.uy;
-      if (tt > 0 && tt < E.len) {
-        if (sd <= 0) {
-          if (!d.fail)
-            fail(fmt::format("disc {} (radius {:.4g} m) passed through liner element {} at t = {:.4f} s (overlap "
-                             "larger than its radius): the contacts are too soft or the time step too large; give "
-                             "a shorter [dem] collision_time_s (or a larger stiffness) or more steps_per_collision",
-                             id_[i], ri, e, clk.time));
-          d.fail = 1;
-          continue;
+      if (sd <= 0 && cross_check) {
+        // Passed through: the centre crossed the element, from its particle side
+        // to its back, during this step. Being behind the element's line within
+        // a radius is not enough: beside a fold of the liner thinner than the
+        // overlap (a worn crest corner) a disc in contact with the near face is
+        // that close behind the far face (docs/models/dem.md §4).
+        const double sd0 = sd - (mx * E.nx + my * E.ny);  // at the start of the step
+        if (sd0 >= 0 && sd0 > sd) {
+          const double f = sd0 / (sd0 - sd);                          // where the path meets the line,
+          const double tx = tt - (1 - f) * (mx * E.ux + my * E.uy);  // and how far along the element
+          if (tx >= 0 && tx <= E.len) {
+            if (!d.fail)
+              fail(fmt::format("disc {} (radius {:.4g} m) passed through liner element {} at t = {:.4f} s (overlap "
+                               "larger than its radius): the contacts are too soft or the time step too large; give "
+                               "a shorter [dem] collision_time_s (or a larger stiffness) or more steps_per_collision",
+                               id_[i], ri, e, clk.time));
+            d.fail = 1;
+            continue;
+          }
         }
+      }
+      if (sd >= ri || sd <= -ri) continue;
+      if (tt > 0 && tt < E.len) {
+        if (sd <= 0) continue;  // the element turns its back to the centre: no face contact
         if (nh < 8) hits[nh++] = {e, -1, ri - sd, E.nx, E.ny, E.ax + tt * E.ux, E.ay + tt * E.uy, true};
       } else if (tt <= 0 && E.convex_start) {
         const int pe = W.prev[e];
@@ -883,6 +904,7 @@ void DemSystem::advance(long long steps) {
         clk.time = clk.step * set_.dt;
         const double angle = set_.wall_angle0 + set_.wall_omega * clk.time;
         clk.c = std::cos(angle), clk.s = std::sin(angle);
+        clk.cp = std::cos(angle - set_.wall_omega * set_.dt), clk.sp = std::sin(angle - set_.wall_omega * set_.dt);
         clk.record = record && s == 0;
         args.first = first;
         // A pair can close the skin only if its two discs moved skin in all; a disc

@@ -99,7 +99,8 @@ class DemSystem {
 
   /// Advances `steps` time steps. Throws SimulationError (with what, where,
   /// when and what to change) if a disc leaves the mill, passes through the
-  /// wall, or moves faster than speed_limit, or a value turns non-finite.
+  /// wall (its centre crosses a wall element during a step), or moves faster
+  /// than speed_limit, or a value turns non-finite.
   void advance(long long steps);
 
   // --- state ---
@@ -157,6 +158,7 @@ class DemSystem {
     long long step = 0;  // step the forces are evaluated for
     double time = 0;     // [s]
     double c = 1, s = 0;  // cos, sin of the wall angle
+    double cp = 1, sp = 0;  // cos, sin of the wall angle one step earlier
     bool record = false;  // keep the wall contacts of this step
   };
   void rebuild_prepare(double time);
