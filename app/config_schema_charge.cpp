@@ -107,6 +107,11 @@ void add_model_keys(Schema& s) {
                             "Mill revolutions run before the averaging starts (docs/models/layer.md)", 0.0, 100.0,
                             false, false, 1.0, [](Config& c, double v) { c.model.settle_revolutions = v; },
                             [](const Config& c) { return c.model.settle_revolutions; }));
+  s.keys.push_back(real_key("model", "relaxation_interval_cells", "-",
+                            "Layer model: support sweep and surface relaxation every this many outer cells of shell "
+                            "travel (docs/models/layer.md §9)",
+                            0.01, 4.0, false, false, 0.5, [](Config& c, double v) { c.model.relaxation_interval_cells = v; },
+                            [](const Config& c) { return c.model.relaxation_interval_cells; }));
   s.keys.push_back(string_key("model", "initial_phases",
                               "Layer model at t = 0: slot 0 of every layer at angle 0 (aligned), or each layer "
                               "turned by a different fraction of its slot (staggered; docs/models/layer.md §Settling)",

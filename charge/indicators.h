@@ -56,6 +56,7 @@ struct RunStats {
   long long elements = 0;   // discrete elements / particles simulated
   long long flights = 0;    // flights launched during the run
   double charge_mass_kg_per_m = 0;  // [kg/m] mass of all elements (conserved), per metre of length
+  double relaxation_interval_s = 0;  // [s] layer model: time between two surface relaxations (0: other models)
   // Particle models (dem) only; 0 otherwise. For `linerlife charge --json`.
   double particle_steps_per_s = 0;  // [1/s] particles x steps per second of wall time while stepping
   double contacts_per_s = 0;        // [1/s] contact evaluations per second of wall time while stepping

@@ -324,6 +324,7 @@ class LayerSim {
   double t_step1_ = 0;                      // end of the current step
   double dt_ = 0;
   int substeps_ = 1;
+  double relax_dt_ = 0;  // [s] interval of the support sweep and surface relaxation
   int deepest_ = 0;                         // deepest layer holding an element (for the flight skip)
   // ---- averaging window
   double t_avg0_ = 0, t_end_ = 0;
@@ -402,6 +403,9 @@ LayerSim::LayerSim(const ChargeInput& in) : in_(in) {
   if (!(ms.repose_angle_deg > 0 && ms.repose_angle_deg < 90))
     throw InputError("model.repose_angle_deg", fmt::format("repose_angle_deg = {}: allowed 0 < value < 90", ms.repose_angle_deg));
   if (!(in.revolutions >= 0)) throw InputError("--revolutions", fmt::format("revolutions = {}: must be >= 0", in.revolutions));
+  if (!(ms.relaxation_interval_cells >= 0.01 && ms.relaxation_interval_cells <= 4))
+    throw InputError("model.relaxation_interval_cells",
+                     fmt::format("relaxation_interval_cells = {}: allowed 0.01 <= value <= 4", ms.relaxation_interval_cells));
   if (!(ms.settle_revolutions >= 0))
     throw InputError("model.settle_revolutions", fmt::format("settle_revolutions = {}: must be >= 0", ms.settle_revolutions));
   if (ms.initial_phases != "aligned" && ms.initial_phases != "staggered")
@@ -1822,16 +1826,29 @@ ChargeResult LayerSim::run() {
       L_[j].phase = phase0_[j] = (f - std::floor(f)) * L_[j].delta;
     }
   setup_initial_fill();
-  // time step: sub-step a step the model cannot take (docs/models/layer.md §Time step)
+  // Support sweep and surface relaxation (foot stability) run on a fixed
+  // schedule in time, every relaxation_interval_cells times the time the
+  // shell takes to move one outer cell (default half), whatever the step; it
+  // is a parameter of the model, not only of its numerics: the charge surface
+  // steepens past the angle of repose between two relaxations
+  // (docs/models/layer.md §9, "The relaxation interval").
+  const double relax_dt = relax_dt_ = in_.model.relaxation_interval_cells * L_[0].delta / omega_;
+  // time step: sub-step a step the model cannot take (docs/models/layer.md §Time step),
+  // and one longer than the relaxation interval (which would run less often than scheduled)
   const double courant = in_.model.max_courant > 0 ? in_.model.max_courant : kLayerMaxCourant;
-  const double dt_max = courant * d_ / (omega_ * R_eff_);
+  const double dt_courant = courant * d_ / (omega_ * R_eff_);
+  const double dt_max = std::min(dt_courant, relax_dt);
   const double dt_req = in_.model.time_step_s;
   substeps_ = dt_req > dt_max ? static_cast<int>(std::ceil(dt_req / dt_max - 1e-9)) : 1;
   dt_ = dt_req / substeps_;
-  if (substeps_ > 1)
+  if (substeps_ > 1 && dt_courant <= relax_dt)
     notes_.push_back(fmt::format("time_step_s = {} s moves the shell {:.2f} media diameters per step (stable up to {}): "
                                  "sub-stepped {} times ({:.4g} s)",
                                  dt_req, omega_ * R_eff_ * dt_req / d_, courant, substeps_, dt_));
+  else if (substeps_ > 1)
+    notes_.push_back(fmt::format("time_step_s = {} s is longer than the relaxation interval ({} outer cells, {:.4g} s): "
+                                 "sub-stepped {} times ({:.4g} s)",
+                                 dt_req, in_.model.relaxation_interval_cells, relax_dt, substeps_, dt_));
   const double T_rev = kTwoPi / omega_;
   const double revs = in_.revolutions > 0 ? in_.revolutions : 2.0;
   t_avg0_ = in_.model.settle_revolutions * T_rev;
@@ -1900,13 +1917,10 @@ ChargeResult LayerSim::run() {
     snap_dt_ = T_rev / snaps_left_;
     next_snap_ = t_end_ - T_rev + 0.5 * snap_dt_;
   }
-  // Support sweep and surface relaxation (foot stability) run on a fixed
-  // schedule in time, every half the time the shell takes to move one outer
-  // cell, whatever the step; loads, flights' occupancy and the column map are
-  // sampled every two degrees of mill rotation (a quadrature of the time
-  // averages). Both are independent of the time step (docs/models/layer.md
-  // §Time step).
-  const double relax_dt = 0.5 * L_[0].delta / omega_;
+  // Loads, flights' occupancy and the column map are sampled every two
+  // degrees of mill rotation (a quadrature of the time averages); like the
+  // relaxation (relax_dt above) independent of the time step
+  // (docs/models/layer.md §Time step).
   const double sample_dt = (2.0 * kPi / 180.0) / omega_;
   // flight skips: at most two outer cells' worth of rotation; the column
   // window must cover the rotation over a sampling interval plus a skip
@@ -2062,6 +2076,7 @@ ChargeResult LayerSim::run() {
   st.elements = N_;
   st.flights = n_flights_;
   st.charge_mass_kg_per_m = N_ * m_;
+  st.relaxation_interval_s = relax_dt_;
   return res;
 }
 

@@ -313,6 +313,21 @@ TEST_CASE("an unknown layer-model start is refused naming the key, value and the
   fs::remove_all(dir);
 }
 
+TEST_CASE("a relaxation interval out of range is refused naming the key, value and range", "[app][cli][input]") {
+  const fs::path dir = temp_dir("relaxation_interval");
+  for (const char* v : {"0.0", "5.0"}) {
+    write_file(dir / "relax.toml", defaults_with("relaxation_interval_cells = ", std::string("relaxation_interval_cells = ") + v));
+    const RunResult r = run_linerlife("charge " + (dir / "relax.toml").string() + " --json", 30);
+    INFO(v << "\n" << r.err);
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK_THAT(r.err, Catch::Contains((dir / "relax.toml").string() + ":"));
+    CHECK_THAT(r.err, Catch::Contains("relaxation_interval_cells"));
+    CHECK_THAT(r.err, Catch::Contains("0.01"));
+  }
+  fs::remove_all(dir);
+}
+
 TEST_CASE("an output folder that cannot be written, or a checkpoint that is not one, is refused before any work",
           "[app][cli][input]") {
   const fs::path dir = temp_dir("bad_out");
