@@ -115,6 +115,7 @@ int main(int argc, char** argv) {
                  j.label, m.lifter_height_m, m.face_angle_leading_deg, I.diameter_eff_m, I.inner_radius_m, I.toe_deg,
                  I.shoulder_deg, I.com_angle_deg, I.com_radius_m, I.n_layers, I.n_trajectories, I.net_power_kw,
                  I.alt_net_power_kw, I.layer_speed_rpm.size(), wall);
+      for (const auto& n : r.notes) fmt::print(stderr, "{}: note: {}\n", j.label, n);
     } catch (const std::exception& e) {
       fmt::print("{}\t{:.4f}\t{:.2f}\tFAILED: {}\n", j.label, m.lifter_height_m, m.face_angle_leading_deg, e.what());
     }

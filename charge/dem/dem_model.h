@@ -39,6 +39,8 @@ struct DemRunInfo {
   long long list_builds = 0;
   double max_overlap_ratio = 0;       // [-] largest disc-disc overlap over the smaller radius
   double max_wall_overlap_ratio = 0;  // [-] largest disc-liner overlap over the radius (1: through the liner)
+  long long wall_hits_dropped = 0;    // disc-liner contacts beyond DemSystem::kMaxWallHits of one disc, dropped
+  long long wall_springs_dropped = 0;  // contacts beyond DemSystem::kWallSlots of one disc: tangential spring restarted
   long long impacts = 0;
   double drive_power_w_per_m = 0;     // [W/m] P = T omega from the contact forces on the liner
   double torque_arm_power_w_per_m = 0;  // [W/m] omega g <sum m x> over the samples (thesis eq. 4.3), a check

@@ -149,6 +149,14 @@ class DemSystem {
   double list_entries_per_disc() const { return n_ ? static_cast<double>(nb_j_.size()) / n_ : 0.0; }  // at the last build
   double max_overlap_ratio() const { return max_overlap_ratio_; }  // largest disc-disc overlap / smaller radius seen
   double max_wall_overlap_ratio() const { return max_wall_overlap_ratio_; }  // largest disc-wall overlap / radius
+  /// Tangential springs of liner contacts kept per disc from step to step.
+  static constexpr int kWallSlots = 4;
+  /// Liner contacts one disc can have at once (beyond, the deepest are kept).
+  static constexpr int kMaxWallHits = 16;
+  /// Disc-liner contacts dropped beyond kMaxWallHits of one disc, and contacts
+  /// beyond kWallSlots whose tangential spring was not kept, summed over steps.
+  long long wall_hits_dropped() const { return wall_hits_dropped_; }
+  long long wall_springs_dropped() const { return wall_springs_dropped_; }
 
  private:
   struct ThreadData;
@@ -190,7 +198,6 @@ class DemSystem {
   std::vector<int> ncontact_;
   std::vector<long long> free_steps_;
   // wall contact history: kWallSlots per particle
-  static constexpr int kWallSlots = 4;
   std::vector<int> wslot_elem_;     // -1 empty
   std::vector<double> wslot_xi_;
   // neighbour list (CSR, rows i, partners j > i)
@@ -225,6 +232,7 @@ class DemSystem {
   long long calls_ = 0;
   int last_threads_ = 1;
   double max_overlap_ratio_ = 0, max_wall_overlap_ratio_ = 0;
+  long long wall_hits_dropped_ = 0, wall_springs_dropped_ = 0;
   double accum_duration_ = 0;
   long long accum_start_step_ = 0;
   // failure raised inside the parallel region

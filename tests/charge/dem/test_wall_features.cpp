@@ -133,3 +133,38 @@ TEST_CASE("dem wall: a disc pressed on a fold thinner than its overlap stays on 
   CHECK(sys.y()[0] == Approx(0.025).margin(1e-6));
   CHECK(std::abs(sys.vx()[0]) < 1e-3);
 }
+
+TEST_CASE("dem wall: a disc touching more liner elements than its contact list holds is counted, not silent",
+          "[dem][walls]") {
+  // A disc of radius 20 mm held at the centre of a lower half-circle pocket of
+  // radius 19.9 mm: it overlaps every element of the pocket by 0.1 mm. With
+  // 62 elements of 1 mm it touches more than DemSystem::kMaxWallHits (16) at
+  // once, with 10 elements of 6.2 mm fewer. No gravity: the disc stays put.
+  const double r = 0.02, m = 2.0, R = 0.0199;
+  DemSettings s;
+  s.particle = s.wall = make_contact_params(ContactLaw::Linear, 0.5, 0.3, 0.0, 1e-3, 0, 1.0);
+  s.dt = 1e-3 / 20;
+  s.gravity_x = s.gravity_y = 0;
+  auto pocket = [&](int n) {
+    std::vector<Eigen::Vector2d> nodes;
+    for (int k = 0; k <= n; ++k) {
+      const double a = -M_PI + M_PI * k / n;  // from (-R, 0) down and round to (R, 0)
+      nodes.push_back({R * std::cos(a), R * std::sin(a)});
+    }
+    return nodes;
+  };
+  for (int n : {10, 62}) {
+    DemSystem sys(s, make_wall_mesh(pocket(n), false), one_disc(0, 0, 0, 0, 0, r, m));
+    REQUIRE_NOTHROW(sys.advance(3));
+    INFO(n << " elements: " << sys.wall_hits_dropped() << " dropped, " << sys.wall_springs_dropped()
+           << " without a spring, " << sys.wall_contact_steps() << " contact evaluations");
+    if (n <= DemSystem::kMaxWallHits) {
+      CHECK(sys.wall_hits_dropped() == 0);
+    } else {
+      // every step finds n contacts and keeps 16 (the merge of shallow concave
+      // nodes may then drop some of those, not the count of the dropped)
+      CHECK(sys.wall_hits_dropped() >= (n - DemSystem::kMaxWallHits) * 3);
+      CHECK(sys.wall_springs_dropped() > 0);
+    }
+  }
+}
