@@ -43,6 +43,8 @@ struct ModelSpec {
   std::string initial_phases = "staggered";  // layer model at t = 0: "staggered" (each layer turned by a different
                                              //     fraction of its slot) | "aligned" (slot 0 of every layer at angle 0)
   double hf_lift_angle_deg = 45.0;      // [deg] lift angle alpha of the Hogg-Fuerstenau power figure
+  double element_size_diameters = 1.0;  // [-] studies only: layer model's element edge in media diameters
+                                        //     (agglomerated elements, thesis §4.4.5; docs/models/layer.md §1)
   double relaxation_interval_cells = 0.5;  // [-] layer model: support sweep and surface relaxation every this many
                                          //     outer cells of shell travel (docs/models/layer.md §9)
   double max_courant = 0;               // [-] studies only: shell travel per step / media diameter allowed

@@ -285,7 +285,11 @@ class LayerSim {
   std::vector<SegmentMetrics> seg_;
   LinerRideTable ride_;
   double inv_d_ = 0;
-  double R_eff_ = 0, d_ = 0, a_ = 0, omega_ = 0, J_ = 0, phi_ = 0;
+  // d_: edge of an element (a cell of the lattice), element_size_diameters
+  // media diameters (1: one ball); a_ = d_ / 2. d_ball_: the media diameter,
+  // for what concerns one ball (its mass and size in impacts, slurry drag,
+  // the trajectory threshold).
+  double R_eff_ = 0, d_ = 0, a_ = 0, omega_ = 0, J_ = 0, phi_ = 0, d_ball_ = 0;
   double rho_c_ = 0;           // [kg/m3] charge bulk density (Morrell)
   double m_ = 0;               // [kg/m] mass of one element
   double m_sphere_ = 0;        // [kg] one media sphere of the element's mean solid density
@@ -414,7 +418,13 @@ LayerSim::LayerSim(const ChargeInput& in) : in_(in) {
   if (ms.slurry_drag && c.discharge != Discharge::Overflow)
     throw InputError("model.slurry_drag", "slurry_drag = \"on\" needs an overflow mill ([mill] discharge = \"overflow\"): a grate mill has no slurry pool");
   parse_slip_law(ms.slip_model);  // refuses unknown names
-  d_ = c.ball_diameter_m;
+  if (!(ms.element_size_diameters >= 1 && ms.element_size_diameters <= 4))
+    throw InputError("model.element_size_diameters",
+                     fmt::format("element_size_diameters = {}: allowed 1 <= value <= 4", ms.element_size_diameters));
+  d_ball_ = c.ball_diameter_m;
+  // Agglomerated elements (thesis §4.4.5: balls agglomerated into discrete
+  // elements of equivalent volume): a square cell of k media diameters.
+  d_ = ms.element_size_diameters * d_ball_;
   a_ = 0.5 * d_;
   inv_d_ = 1.0 / d_;
   J_ = c.filling;
@@ -429,11 +439,17 @@ void LayerSim::setup_geometry() {
   metrics_ = metrics(canon_.surface, Rotation::Ccw, 7800.0);
   seg_ = metrics_.segments;
   R_eff_ = 0.5 * metrics_.effective_diameter_m;
-  if (!(d_ < 0.25 * R_eff_))
+  if (!(d_ball_ < 0.25 * R_eff_))
     throw InputError("charge.ball_diameter_m",
                      fmt::format("ball_diameter_m = {} m is too large for a mill of {:.3f} m inside the liners: the layer "
                                  "model needs at least four layers of media across the radius",
-                                 d_, 2 * R_eff_));
+                                 d_ball_, 2 * R_eff_));
+  if (!(d_ < 0.25 * R_eff_))
+    throw InputError("model.element_size_diameters",
+                     fmt::format("element_size_diameters = {} makes elements of {:.4g} m, too large for a mill of "
+                                 "{:.3f} m inside the liners: the layer model needs at least four layers of elements "
+                                 "across the radius",
+                                 in_.model.element_size_diameters, d_, 2 * R_eff_));
   ride_ = build_liner_ride_table(canon_.surface, a_, 4);
   phi_ = in_.mill.speed_rpm / critical_speed_rpm(2 * R_eff_);
   const ChargeSpec& c = in_.charge;
@@ -445,7 +461,7 @@ void LayerSim::setup_geometry() {
   rho_c_ = morrell_charge_density(J_, c.ball_filling, c.porosity, c.slurry_void_fill, S_vol, c.ore_density_kg_m3,
                                   c.ball_density_kg_m3, rho_w);
   rho_solid_ = (c.ball_filling * c.ball_density_kg_m3 + (J_ - c.ball_filling) * c.ore_density_kg_m3) / J_;
-  m_sphere_ = kPi / 6.0 * d_ * d_ * d_ * rho_solid_;
+  m_sphere_ = kPi / 6.0 * d_ball_ * d_ball_ * d_ball_ * rho_solid_;
   if (c.discharge == Discharge::Overflow) y_pool_ = -c.trunnion_radius_m;  // slurry at the trunnion (Morrell 1996)
 }
 
@@ -860,7 +876,7 @@ void LayerSim::drag_advance(Flight& f, double h) const {
   SlurryDrag sd;
   sd.fluid_density_kg_m3 = rho_pulp_;
   sd.particle_density_kg_m3 = rho_solid_;
-  sd.diameter_m = d_;
+  sd.diameter_m = d_ball_;  // the drag acts on each ball of the element
   const V v_new = slurry_drag_step(sd, f.v0, h);
   f.p0 += 0.5 * h * (f.v0 + v_new);
   f.v0 = v_new;
@@ -1106,7 +1122,7 @@ void LayerSim::check_flights(double t1) {
         iev.normal_speed_m_s = vn;
         iev.tangential_speed_m_s = std::abs(vrel.dot(t));
         iev.mass_kg = m_sphere_;
-        iev.diameter_m = d_;
+        iev.diameter_m = d_ball_;
         iev.rate_per_s = m_ / m_sphere_;  // spheres per element per metre; divided by the duration at the end
         iev.direct = true;
         impacts_.push_back(iev);
@@ -1114,7 +1130,7 @@ void LayerSim::check_flights(double t1) {
     }
     if (averaging_ && l.t >= t_avg0_) {
       const double tf = l.t - f.t0;
-      if (tf >= 2.0 * std::sqrt(d_ / kGravity)) {  // a trajectory (docs/models/indicators.md)
+      if (tf >= 2.0 * std::sqrt(d_ball_ / kGravity)) {  // a trajectory (docs/models/indicators.md)
         ++traj_count_[f.from_layer];
         ++n_traj_flights_;
       }
@@ -1842,9 +1858,10 @@ ChargeResult LayerSim::run() {
   substeps_ = dt_req > dt_max ? static_cast<int>(std::ceil(dt_req / dt_max - 1e-9)) : 1;
   dt_ = dt_req / substeps_;
   if (substeps_ > 1 && dt_courant <= relax_dt)
-    notes_.push_back(fmt::format("time_step_s = {} s moves the shell {:.2f} media diameters per step (stable up to {}): "
+    notes_.push_back(fmt::format("time_step_s = {} s moves the shell {:.2f} {} per step (stable up to {}): "
                                  "sub-stepped {} times ({:.4g} s)",
-                                 dt_req, omega_ * R_eff_ * dt_req / d_, courant, substeps_, dt_));
+                                 dt_req, omega_ * R_eff_ * dt_req / d_,
+                                 d_ == d_ball_ ? "media diameters" : "element widths", courant, substeps_, dt_));
   else if (substeps_ > 1)
     notes_.push_back(fmt::format("time_step_s = {} s is longer than the relaxation interval ({} outer cells, {:.4g} s): "
                                  "sub-stepped {} times ({:.4g} s)",
@@ -2090,7 +2107,8 @@ ChargeResult LayerModel::run(const ChargeInput& in) const {
 std::unique_ptr<ChargeModel> make_layer_model() { return std::make_unique<LayerModel>(); }
 
 double layer_model_max_time_step(const ChargeInput& in, double effective_radius_m) {
-  return kLayerMaxCourant * in.charge.ball_diameter_m / (in.mill.omega_rad_s() * effective_radius_m);
+  return kLayerMaxCourant * in.model.element_size_diameters * in.charge.ball_diameter_m /
+         (in.mill.omega_rad_s() * effective_radius_m);
 }
 
 }  // namespace linerlife

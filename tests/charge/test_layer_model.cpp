@@ -25,6 +25,11 @@ TEST_CASE("element mass is conserved and equals the charge mass", "[charge][laye
   const LinerSurface s = build_liner_surface(c.mill, c.liner);
   ChargeInput in = charge_input(c, s, 2);
   in.record_snapshot = true;
+  // one ball per element (the default), and agglomerates of 1.5 balls
+  // (docs/models/layer.md §1): the element count scales as 1 / edge^2
+  const double edge = GENERATE(1.0, 1.5);
+  in.model.element_size_diameters = edge;
+  INFO("element edge " << edge << " media diameters");
   const ChargeResult r = run_model("layer", in);
   // charge mass: Morrell's bulk density times the charge volume J * free area, per metre
   const double A = metrics(s, c.mill.rotation, 7800).free_area_m2;
@@ -34,7 +39,7 @@ TEST_CASE("element mass is conserved and equals the charge mass", "[charge][laye
   CHECK(r.stats.charge_mass_kg_per_m == Approx(rho_c * c.charge.filling * A).epsilon(1e-12));
   REQUIRE(r.snapshots.size() == 36);
   for (const auto& sn : r.snapshots) CHECK(static_cast<long long>(sn.position.size()) == r.stats.elements);
-  CHECK(r.stats.elements == std::lround(c.charge.filling * A / std::pow(c.charge.ball_diameter_m, 2)));
+  CHECK(r.stats.elements == std::lround(c.charge.filling * A / std::pow(edge * c.charge.ball_diameter_m, 2)));
 }
 
 TEST_CASE("no element sits inside the liner", "[charge][layer]") {
@@ -42,8 +47,11 @@ TEST_CASE("no element sits inside the liner", "[charge][layer]") {
   const LinerSurface s = build_liner_surface(c.mill, c.liner);
   ChargeInput in = charge_input(c, s, 2);
   in.record_snapshot = true;
+  const double edge = GENERATE(1.0, 1.5);  // agglomerated elements: docs/models/layer.md §1
+  in.model.element_size_diameters = edge;
+  INFO("element edge " << edge << " media diameters");
   const ChargeResult r = run_model("layer", in);
-  const double a = 0.5 * c.charge.ball_diameter_m;
+  const double a = 0.5 * edge * c.charge.ball_diameter_m;
   double worst = 1e9;
   for (const auto& sn : r.snapshots) {
     // into the frame of the liner, which has turned by liner_angle_rad
@@ -360,6 +368,21 @@ TEST_CASE("the layer model refuses input it cannot take", "[charge][layer][input
   refused([](ChargeInput& in) { in.model.slurry_drag = true; }, "model.slurry_drag");
   refused([](ChargeInput& in) { in.revolutions = -1; }, "--revolutions");
   refused([](ChargeInput& in) { in.model.relaxation_interval_cells = 0; }, "model.relaxation_interval_cells");
+  refused([](ChargeInput& in) { in.model.element_size_diameters = 0.5; }, "model.element_size_diameters");
+  refused([](ChargeInput& in) { in.model.element_size_diameters = 4.5; }, "model.element_size_diameters");
+  {  // pilot test 5 (50 mm media in a 0.75 m mill): elements of 2 media diameters leave three layers
+    const Config c5 = mill_config("pilot_test_05.toml");
+    const LinerSurface s5 = build_liner_surface(c5.mill, c5.liner);
+    ChargeInput in = charge_input(c5, s5, 1, 0);
+    in.model.element_size_diameters = 2;
+    try {
+      run_model("layer", in);
+      FAIL("accepted elements of 0.1 m in a 0.75 m mill");
+    } catch (const InputError& e) {
+      CHECK(e.key() == "model.element_size_diameters");
+      CHECK_THAT(e.what(), Catch::Contains("four layers"));
+    }
+  }
   refused([](ChargeInput& in) { in.charge.ball_diameter_m = 0.2; }, "charge.ball_diameter_m");
 }
 
