@@ -9,10 +9,12 @@
 
 #include "app/commands.h"
 #include "geometry/errors.h"
+#include "geometry/heap_tuning.h"
 
 using namespace linerlife;
 
 int main(int argc, char** argv) {
+  keep_freed_memory();  // the wear run's remeshes would page-fault their buffers back in (heap_tuning.h)
   CLI::App app{
       "linerlife: forecast of tumbling-mill liner wear and the relining date.\n"
       "Every command without a CONFIG file runs the bundled Qiu (2001) SAG mill."};
