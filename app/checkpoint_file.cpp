@@ -103,6 +103,14 @@ void write_checkpoint(const OutputDir& dir, const std::string& config_text, cons
                                       s.nonlinear_failures, s.explicit_steps},
                {7});
     h5.dataset(g + "/stats_double", std::vector<double>{s.wall_s, s.charge_wall_s, s.charge_simulated_s}, {3});
+    // the charge model's notes so far: text as attributes, (first drive, drives) as pairs
+    std::vector<long long> nd;
+    for (size_t i = 0; i < c.notes.size(); ++i) {
+      h5.attr(g, fmt::format("note_{}", i), c.notes[i].text);
+      nd.push_back(c.notes[i].first_drive);
+      nd.push_back(c.notes[i].drives);
+    }
+    if (!nd.empty()) h5.dataset(g + "/note_drives", nd, {nd.size()});
     h5.close();
   }
   dir.commit(tmp, "checkpoint.h5");
@@ -177,6 +185,10 @@ ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& c
   c.stats.wall_s = sd[0];
   c.stats.charge_wall_s = sd[1];
   c.stats.charge_simulated_s = sd[2];
+  const std::vector<long long> nd = h5.exists(g + "/note_drives") ? h5.ints(g + "/note_drives") : std::vector<long long>{};
+  if (nd.size() % 2 != 0) throw InputError(path, fmt::format("{}: damaged notes", path));
+  for (size_t i = 0; i < nd.size() / 2; ++i)
+    c.notes.push_back({h5.attr_string(g, fmt::format("note_{}", i)), nd[2 * i], nd[2 * i + 1]});
   return c;
 }
 

@@ -90,6 +90,8 @@ int run_compare(const CompareOptions& o) {
     Case& k = cases[i];
     if (!o.json) std::cerr << fmt::format("  forecast {}/{}: {}\n", i + 1, cases.size(), k.label);
     k.result = run_forecast(setups[i].input, *setups[i].provider, k.config.forecast);
+    if (!k.result.notes.empty()) std::cerr << fmt::format("  {}:\n", k.label);
+    note_drive_notes(k.result.notes, k.result.stats.charge_redrives);
     k.mean_power_kw = time_mean(k.result.history, &LifeRecord::net_power_kw);
     k.final_power_kw = k.result.history.back().net_power_kw;
     k.mean_direct_impacts = time_mean(k.result.history, &LifeRecord::direct_impact_fraction);

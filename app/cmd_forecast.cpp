@@ -149,6 +149,7 @@ int run_forecast_command(const ForecastOptions& o) {
     throw;
   }
   if (hooks.progress) std::fprintf(stderr, "\n");
+  note_drive_notes(f.notes, f.stats.charge_redrives);
   const LifeRecord& last = f.history.back();
 
   if (o.json) {
@@ -189,6 +190,7 @@ int run_forecast_command(const ForecastOptions& o) {
         .set("explicit_steps", f.stats.explicit_steps)
         .set("charge_simulated_s", f.stats.charge_simulated_s)
         .set("wall_s", f.stats.wall_s)
+        .set("charge_notes", drive_notes_json(f.notes))
         .set("history", hist);
     std::cout << j.dump() << "\n";
   } else {

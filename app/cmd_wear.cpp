@@ -103,6 +103,7 @@ int run_wear_command(const WearOptions& o) {
     };
   const WearRunResult r = run_wear(in, entry);
   if (tty) std::fprintf(stderr, "\r            \r");
+  note_drive_notes(r.notes, r.charge_drives);
 
   std::optional<WearRunResult> abrasion_only, impact_only;
   if (!o.out.empty() && has_kind(c.wear, WearKind::Abrasion) && has_kind(c.wear, WearKind::Impact)) {

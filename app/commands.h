@@ -4,10 +4,13 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "app/config.h"
+#include "app/json.h"
+#include "charge/drive_notes.h"
 
 namespace linerlife {
 
@@ -31,5 +34,13 @@ Config load_config_or_default(const std::string& path);
 
 /// Prints a summary line to stderr unless quiet.
 void note(const std::string& text);
+
+/// The charge model's notes gathered over `drives` drives (a forecast's, a
+/// wear run's), one line each on stderr: "linerlife: note: in N of M charge
+/// drives (first in drive K): TEXT".
+void note_drive_notes(const std::vector<DriveNote>& notes, long long drives);
+
+/// The same as a JSON array of {text, drives, first_drive}.
+Json drive_notes_json(const std::vector<DriveNote>& notes);
 
 }  // namespace linerlife

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "app/h5_writer.h"
+#include "app/commands.h"
 #include "app/results.h"
 #include "geometry/metrics.h"
 #include "wear/wear_laws.h"
@@ -68,6 +69,7 @@ Json wear_summary(const Config& c, const WearRunResult& r, const Mill& mill, con
       .set("remeshes", r.remeshes + r.fast_remeshes)
       .set("remeshes_exact", r.remeshes)
       .set("charge_drives", r.charge_drives)
+      .set("charge_notes", drive_notes_json(r.notes))
       .set("smoothing", std::string(smoothing_method_name(c.wear.smoothing.method)))
       .set("smoothing_max_rel_change", r.smoothing_max_rel_change)
       .set("simulated_s", r.simulated_s)

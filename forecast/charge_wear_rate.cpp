@@ -29,6 +29,7 @@ RateSample ChargeWearRate::sample(const LinerSurface& s, double revolutions) {
   r.impact_fraction = rates_.mass_rate_kg_s_per_m > 0 ? rates_.impact_mass_rate_kg_s_per_m / rates_.mass_rate_kg_s_per_m : 0;
   r.simulated_s = cr.stats.simulated_s;
   r.wall_s = cr.stats.wall_s;
+  r.notes = cr.notes;
   return r;
 }
 

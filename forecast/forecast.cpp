@@ -410,6 +410,7 @@ class Life {
                                           r, t_ / 3600.0));
     r_now_ = cell_.cell_rates(ring, last_.element_rate_m_s, spec_.rate_smoothing_passes);
     ++res_.stats.charge_redrives;
+    add_drive_notes(res_.notes, last_.notes, res_.stats.charge_redrives);
     res_.stats.charge_wall_s += last_.wall_s;
     res_.stats.charge_simulated_s += last_.simulated_s;
   }
@@ -513,6 +514,7 @@ class Life {
     c.history = res_.history;
     c.profiles = res_.profiles;
     c.stats = res_.stats;
+    c.notes = res_.notes;
     c.stats.wall_s += std::chrono::duration<double>(now - wall0_).count();
     hooks_.checkpoint(c);
   }
@@ -545,6 +547,7 @@ class Life {
     res_.history = c.history;
     res_.profiles = c.profiles;
     res_.stats = c.stats;
+    res_.notes = c.notes;
   }
 
   void run_ode();

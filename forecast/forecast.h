@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include "charge/drive_notes.h"
 #include "forecast/calendar.h"
 #include "forecast/forecast_spec.h"
 #include "forecast/rate_provider.h"
@@ -73,6 +74,7 @@ struct ForecastResult {
   std::vector<ProfileRecord> profiles;
   ForecastStats stats;
   LinerSurface final_surface;
+  std::vector<DriveNote> notes;  // the charge model's notes over all drives (drive_notes.h)
 };
 
 /// progress(hours, fraction of the horizon or of the life so far)
@@ -97,6 +99,7 @@ struct ForecastCheckpoint {
   std::vector<LifeRecord> history;
   std::vector<ProfileRecord> profiles;
   ForecastStats stats;
+  std::vector<DriveNote> notes;
 };
 
 struct ForecastHooks {

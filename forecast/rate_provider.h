@@ -4,6 +4,7 @@
 // the wear laws (charge_wear_rate.h); tests use analytic fields.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "charge/indicators.h"
@@ -18,6 +19,7 @@ struct RateSample {
   double impact_fraction = 0;            // [-] share of the wear rate from impacts
   double simulated_s = 0;                // [s] charge time simulated for this sample
   double wall_s = 0;                     // [s] wall time of the sample
+  std::vector<std::string> notes;        // the charge model's notes of this drive (ChargeResult::notes)
 };
 
 class RateProvider {

@@ -91,6 +91,7 @@ WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry) {
     charge = charge_model->run(ci);
     res.charge_wall_s += seconds_since(t0);
     ++res.charge_drives;
+    add_drive_notes(res.notes, charge.notes, res.charge_drives);
     steps_since_drive = 0;
     if (charge.loads.n_elements != s.n_elements())
       throw SimulationError(fmt::format("the charge model \"{}\" returned loads for {} elements on a surface of {}",

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "charge/charge_model.h"
+#include "charge/drive_notes.h"
 #include "geometry/remesh.h"
 #include "wear/liner_material.h"
 #include "wear/recession.h"
@@ -86,6 +87,7 @@ struct WearRunResult {
   double realtime_ratio = 0;                                                 // simulated_s / wall_s
   bool worn_through = false;
   std::string message;
+  std::vector<DriveNote> notes;  // the charge model's notes over all drives (charge/drive_notes.h)
 };
 
 /// Runs the coupled wear loop with the charge model of `entry`. Throws

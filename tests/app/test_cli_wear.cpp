@@ -1,6 +1,7 @@
 // `linerlife wear`: bad input refused at setup with exit 2 and no output; the
 // run itself once a charge model is in the table (issue 4 §4, §6).
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -113,6 +114,33 @@ TEST_CASE("wear: the bundled mill runs, or says which charge model is missing", 
   for (const char* key : {"mass_loss_kg_per_m", "liner_mass_kg_per_m", "max_recession_m", "impact_fraction",
                           "lifter_height_m", "face_angle_leading_deg", "simulated_s", "wall_s", "realtime_ratio"})
     CHECK_THAT(r.out, Catch::Contains(std::string("\"") + key + "\""));
+}
+
+TEST_CASE("wear: the charge model's notes reach the user, counted over the drives", "[app][cli][wear]") {
+  if (!has_model("layer")) return;
+  // a 20 ms step moves the Qiu shell 0.81 media diameters: the layer model
+  // sub-steps it and says so in every drive (with feedback, one per remesh)
+  const fs::path dir = temp_dir("wear_notes");
+  std::string text = run_linerlife("defaults").out;
+  const auto pos = text.find("\ntime_step_s = ");
+  REQUIRE(pos != std::string::npos);
+  text.replace(pos + 1, text.find('\n', pos + 1) - pos - 1, "time_step_s = 0.02");
+  write_file(dir / "notes.toml", text);
+  const RunResult r = run_linerlife(
+      "wear " + (dir / "notes.toml").string() + " --json --revolutions 0.3 --feedback", 60);
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  std::smatch m;
+  REQUIRE(std::regex_search(r.out, m, std::regex("\"charge_drives\": ([0-9]+)")));
+  const int drives = std::stoi(m[1]);
+  CHECK(drives > 2);
+  CHECK_THAT(r.err, Catch::Contains(fmt::format("linerlife: note: in {} of {} charge drives (first in drive 1): "
+                                                "time_step_s = 0.02 s",
+                                                drives, drives)));
+  CHECK_THAT(r.err, Catch::Contains("sub-stepped 2 times"));
+  CHECK(std::regex_search(r.out, std::regex("\"charge_notes\": \\[\\s*\\{\\s*\"text\": \"time_step_s = 0.02 s")));
+  CHECK(std::regex_search(r.out, std::regex("\"drives\": " + std::to_string(drives) + "\\b")));
+  fs::remove_all(dir);
 }
 
 // docs/validation/speed-accuracy.md: the DEM's coarse-graining changes its

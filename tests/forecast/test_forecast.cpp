@@ -44,9 +44,11 @@ class FieldRates : public RateProvider {
     r.element_rate_m_s.resize(static_cast<size_t>(s.n_elements()));
     for (int i = 0; i < s.n_elements(); ++i) r.element_rate_m_s[i] = f_(s, i);
     ++calls;
+    if (with_note) r.notes = {"a note from drive " + std::to_string(calls)};
     return r;
   }
   int calls = 0;
+  bool with_note = false;  // each drive notes something (the same kind, its own number)
 
  private:
   F f_;
@@ -289,6 +291,7 @@ TEST_CASE("a forecast resumed from any checkpoint ends exactly as the uninterrup
   for (ForecastMethod m : {ForecastMethod::Ode, ForecastMethod::Euler}) {
     sp.method = m;
     auto p = field(rate);
+    p.with_note = true;
     std::vector<ForecastCheckpoint> checkpoints;
     ForecastHooks hooks;
     hooks.checkpoint_interval_s = 0;
@@ -298,6 +301,7 @@ TEST_CASE("a forecast resumed from any checkpoint ends exactly as the uninterrup
     REQUIRE(checkpoints.size() > 5);
     for (size_t k : {size_t(0), checkpoints.size() / 3, checkpoints.size() - 1}) {
       auto q = field(rate);
+      q.with_note = true;
       ForecastHooks resume;
       resume.resume = &checkpoints[k];
       const ForecastResult again = run_forecast(in, q, sp, resume);
@@ -311,6 +315,14 @@ TEST_CASE("a forecast resumed from any checkpoint ends exactly as the uninterrup
       }
       CHECK(again.stats.charge_redrives == whole.stats.charge_redrives);
       CHECK(again.stats.cvode_steps == whole.stats.cvode_steps);
+      // the charge model's notes: one kind, from every drive, the first drive's text
+      REQUIRE(whole.notes.size() == 1);
+      CHECK(whole.notes[0].text == "a note from drive 1");
+      CHECK(whole.notes[0].first_drive == 1);
+      CHECK(whole.notes[0].drives == whole.stats.charge_redrives);
+      REQUIRE(again.notes.size() == 1);
+      CHECK(again.notes[0].text == whole.notes[0].text);
+      CHECK(again.notes[0].drives == whole.notes[0].drives);
     }
   }
 }
