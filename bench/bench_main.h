@@ -3,9 +3,11 @@
 // simulation (3) failures, as the linerlife command uses them.
 #pragma once
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "app/config.h"
 #include "geometry/errors.h"
@@ -20,6 +22,13 @@ inline void set_dem_key(Config& c, const std::string& k, const std::string& v) {
                          : spec->kind == ConfigValue::Kind::Int  ? ConfigValue::Int(std::atoll(v.c_str()))
                                                                  : ConfigValue::Real(std::atof(v.c_str()));
   spec->set(c, cv);
+}
+
+/// The median of `v` (the mean of the middle two for an even count).
+inline double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 /// Runs `body` and maps the failures to exit codes: input 2, simulation 3.

@@ -20,17 +20,13 @@
 
 #include <fmt/format.h>
 
+#include "bench/bench_main.h"
 #include "bench/charge_cases.h"
 
 using namespace linerlife;
+using bench::median;
 
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 double load1() {
   std::ifstream f("/proc/loadavg");

@@ -24,6 +24,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "bench/bench_main.h"
 #include "bench/synthetic_charge.h"
 #include "bench/wear_common.h"
 #include "geometry/errors.h"
@@ -31,15 +32,10 @@
 #include "wear/wear_laws.h"
 
 using namespace linerlife;
+using bench::median;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 double seconds(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 

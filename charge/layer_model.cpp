@@ -1848,16 +1848,16 @@ ChargeResult LayerSim::run() {
   // is a parameter of the model, not only of its numerics: the charge surface
   // steepens past the angle of repose between two relaxations
   // (docs/models/layer.md §9, "The relaxation interval").
-  const double relax_dt = relax_dt_ = in_.model.relaxation_interval_cells * L_[0].delta / omega_;
+  relax_dt_ = in_.model.relaxation_interval_cells * L_[0].delta / omega_;
   // time step: sub-step a step the model cannot take (docs/models/layer.md §Time step),
   // and one longer than the relaxation interval (which would run less often than scheduled)
   const double courant = in_.model.max_courant > 0 ? in_.model.max_courant : kLayerMaxCourant;
   const double dt_courant = courant * d_ / (omega_ * R_eff_);
-  const double dt_max = std::min(dt_courant, relax_dt);
+  const double dt_max = std::min(dt_courant, relax_dt_);
   const double dt_req = in_.model.time_step_s;
   substeps_ = dt_req > dt_max ? static_cast<int>(std::ceil(dt_req / dt_max - 1e-9)) : 1;
   dt_ = dt_req / substeps_;
-  if (substeps_ > 1 && dt_courant <= relax_dt)
+  if (substeps_ > 1 && dt_courant <= relax_dt_)
     notes_.push_back(fmt::format("time_step_s = {} s moves the shell {:.2f} {} per step (stable up to {}): "
                                  "sub-stepped {} times ({:.4g} s)",
                                  dt_req, omega_ * R_eff_ * dt_req / d_,
@@ -1865,7 +1865,7 @@ ChargeResult LayerSim::run() {
   else if (substeps_ > 1)
     notes_.push_back(fmt::format("time_step_s = {} s is longer than the relaxation interval ({} outer cells, {:.4g} s): "
                                  "sub-stepped {} times ({:.4g} s)",
-                                 dt_req, in_.model.relaxation_interval_cells, relax_dt, substeps_, dt_));
+                                 dt_req, in_.model.relaxation_interval_cells, relax_dt_, substeps_, dt_));
   const double T_rev = kTwoPi / omega_;
   const double revs = in_.revolutions > 0 ? in_.revolutions : 2.0;
   t_avg0_ = in_.model.settle_revolutions * T_rev;
@@ -1936,7 +1936,7 @@ ChargeResult LayerSim::run() {
   }
   // Loads, flights' occupancy and the column map are sampled every two
   // degrees of mill rotation (a quadrature of the time averages); like the
-  // relaxation (relax_dt above) independent of the time step
+  // relaxation (relax_dt_ above) independent of the time step
   // (docs/models/layer.md §Time step).
   const double sample_dt = (2.0 * kPi / 180.0) / omega_;
   // flight skips: at most two outer cells' worth of rotation; the column
@@ -1956,7 +1956,7 @@ ChargeResult LayerSim::run() {
     // advance the layers to t1
     for (int j = 0; j < n_open_; ++j) L_[j].phase = wrap2pi(L_[j].phase + L_[j].omega * dt_);
     t_step0_ = t1;
-    if (std::floor(t1 / relax_dt) > std::floor(t0 / relax_dt)) {
+    if (std::floor(t1 / relax_dt_) > std::floor(t0 / relax_dt_)) {
       support_sweep(t1);
       update_columns(t1, false);  // fresh column tops for the relaxation
       relax_surface(t1);
