@@ -2106,9 +2106,4 @@ ChargeResult LayerModel::run(const ChargeInput& in) const {
 
 std::unique_ptr<ChargeModel> make_layer_model() { return std::make_unique<LayerModel>(); }
 
-double layer_model_max_time_step(const ChargeInput& in, double effective_radius_m) {
-  return kLayerMaxCourant * in.model.element_size_diameters * in.charge.ball_diameter_m /
-         (in.mill.omega_rad_s() * effective_radius_m);
-}
-
 }  // namespace linerlife

@@ -27,11 +27,6 @@ class LayerModel : public ChargeModel {
 
 std::unique_ptr<ChargeModel> make_layer_model();
 
-/// The largest stable time step [s] of the layer model for this input: the
-/// one at which the shell moves kMaxCourant media diameters per step
-/// (docs/models/layer.md §Time step).
-double layer_model_max_time_step(const ChargeInput& in, double effective_radius_m);
-
 /// Courant number (shell travel per step / media diameter) above which the
 /// layer model sub-steps (from the time-step study, docs/models/layer.md).
 constexpr double kLayerMaxCourant = 0.45;
