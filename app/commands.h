@@ -43,4 +43,16 @@ void note_drive_notes(const std::vector<DriveNote>& notes, long long drives);
 /// The same as a JSON array of {text, drives, first_drive}.
 Json drive_notes_json(const std::vector<DriveNote>& notes);
 
+/// A caveat on a forecast's net power history, or "" if none is due. The
+/// layer model's net power on worn liners is not validated
+/// (docs/models/layer-worn.md): on the bundled Qiu mill it rises by up to
+/// about 57 % over the life where the 2D DEM's, on the same worn profiles,
+/// changes by at most 3 %. When the layer model's power departs from its
+/// new-liner value by more than kWornPowerCaveatFraction anywhere in the
+/// history, the caveat says by how much and where the DEM stands, so that the
+/// history is not read as the motor's load.
+constexpr double kWornPowerCaveatFraction = 0.15;
+std::string worn_power_caveat(const std::string& charge_model, const std::vector<double>& hours,
+                              const std::vector<double>& net_power_kw);
+
 }  // namespace linerlife

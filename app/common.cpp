@@ -1,3 +1,4 @@
+#include <cmath>
 #include <iostream>
 
 #include <fmt/format.h>
@@ -28,6 +29,29 @@ Json drive_notes_json(const std::vector<DriveNote>& notes) {
     a.push(o);
   }
   return a;
+}
+
+std::string worn_power_caveat(const std::string& charge_model, const std::vector<double>& hours,
+                              const std::vector<double>& net_power_kw) {
+  if (charge_model != "layer" || net_power_kw.size() < 2 || hours.size() != net_power_kw.size()) return "";
+  const double p0 = net_power_kw.front();
+  if (!(p0 > 0)) return "";
+  size_t worst = 0;
+  double dev = 0;
+  for (size_t i = 1; i < net_power_kw.size(); ++i) {
+    const double d = net_power_kw[i] / p0 - 1.0;
+    if (std::isfinite(d) && std::abs(d) > std::abs(dev)) dev = d, worst = i;
+  }
+  if (std::abs(dev) <= kWornPowerCaveatFraction) return "";
+  // The DEM figures: docs/models/layer-worn.md, "The DEM on the same worn
+  // profiles" (bench_layer_worn --model dem on the bundled forecast's
+  // profiles at 0, 3000, 6000 and 9173 h, 20 revolutions each).
+  return fmt::format(
+      "the layer model's net power moves by {:+.0f} % over this life ({:.0f} kW new, {:.0f} kW at {:.0f} h); its power on "
+      "worn liners is not validated: on the bundled Qiu mill's worn profiles the 2D DEM's changes by at most +3 % where "
+      "the layer model's rises by up to +57 % (docs/models/layer-worn.md). Read the power history as the layer model's, "
+      "not as the mill motor's load (the liner loads come from the same charge)",
+      100.0 * dev, p0, net_power_kw[worst], hours[worst]);
 }
 
 }  // namespace linerlife

@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "app/commands.h"
 #include "app/h5_reader.h"
 #include "cli_runner.h"
 #include "geometry/measured_profile.h"
@@ -84,7 +85,35 @@ TEST_CASE("forecast --json gives the relining date, the criterion and the histor
     CHECK(std::isfinite(pw[i]));
     CHECK(pw[i] > 0);
   }
+  // the caveat on the layer model's power is there exactly when its history
+  // departs from the new-liner value by more than the threshold
+  double dev = 0;
+  for (double p : pw) dev = std::max(dev, std::abs(p / pw.front() - 1.0));
+  const auto& cav = j["caveats"].items();
+  CHECK(cav.size() == (dev > kWornPowerCaveatFraction ? 1u : 0u));
+  for (const auto& c : cav) CHECK(r.err.find(c["text"].str()) != std::string::npos);  // also printed as a note
   fs::remove_all(dir);
+}
+
+TEST_CASE("the layer model's power history carries a caveat when it departs from the new liner's by more than 15 %",
+          "[app][forecast]") {
+  const std::vector<double> h{0, 1000, 2000, 3000};
+  // the bundled forecast's shape: +59 % at mid-life
+  const std::string c = worn_power_caveat("layer", h, {5959, 6500, 9446, 8528});
+  CHECK(c.find("+59 %") != std::string::npos);
+  CHECK(c.find("9446 kW at 2000 h") != std::string::npos);
+  CHECK(c.find("docs/models/layer-worn.md") != std::string::npos);
+  // a fall counts as well; the largest departure is the one named
+  CHECK(worn_power_caveat("layer", h, {6000, 5500, 4800, 5900}).find("-20 %") != std::string::npos);
+  // within the threshold, or another model: none
+  CHECK(worn_power_caveat("layer", h, {6000, 6500, 6890, 6100}).empty());
+  CHECK(worn_power_caveat("empirical", h, {5959, 6500, 9446, 8528}).empty());
+  CHECK(worn_power_caveat("dem", h, {5959, 6500, 9446, 8528}).empty());
+  // a history without indicators (NaN) or of one record: none
+  const double nan = std::nan("");
+  CHECK(worn_power_caveat("layer", h, {nan, nan, nan, nan}).empty());
+  CHECK(worn_power_caveat("layer", {0}, {5959}).empty());
+  CHECK(worn_power_caveat("layer", h, {6000, nan, 9000, 6100}).find("+50 %") != std::string::npos);
 }
 
 TEST_CASE("forecast --out writes the results file and its charts; plot redraws them", "[app][cli][forecast][plot]") {
