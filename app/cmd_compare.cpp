@@ -33,6 +33,7 @@ struct Case {
   Config config;
   ForecastResult result;
   double mean_power_kw = 0, final_power_kw = 0, mean_direct_impacts = 0;
+  std::string caveat{};  // on the power history (worn_power_caveat())
 };
 
 /// Time average of a history column over the life (trapezoids).
@@ -95,6 +96,8 @@ int run_compare(const CompareOptions& o) {
     k.mean_power_kw = time_mean(k.result.history, &LifeRecord::net_power_kw);
     k.final_power_kw = k.result.history.back().net_power_kw;
     k.mean_direct_impacts = time_mean(k.result.history, &LifeRecord::direct_impact_fraction);
+    k.caveat = worn_power_caveat(k.config.model.charge, k.result.history);
+    if (!k.caveat.empty()) note(fmt::format("linerlife: note: {}: {}", k.label, k.caveat));
   }
 
   if (o.json) {
@@ -112,7 +115,8 @@ int run_compare(const CompareOptions& o) {
           .set("final_net_power_kw", k.final_power_kw)
           .set("mean_direct_impact_fraction", k.mean_direct_impacts)
           .set("lifter_height_m_final", last.lifter_height_m)
-          .set("face_angle_leading_deg_final", last.face_angle_leading_deg);
+          .set("face_angle_leading_deg_final", last.face_angle_leading_deg)
+          .set("caveats", caveats_json(k.caveat));
       arr.push(j);
     }
     std::cout << Json::object().set("cases", arr).dump() << "\n";

@@ -151,12 +151,7 @@ int run_forecast_command(const ForecastOptions& o) {
   if (hooks.progress) std::fprintf(stderr, "\n");
   note_drive_notes(f.notes, f.stats.charge_redrives);
   const LifeRecord& last = f.history.back();
-  std::string caveat;
-  {
-    std::vector<double> hours, power;
-    for (const LifeRecord& r : f.history) hours.push_back(r.hours), power.push_back(r.net_power_kw);
-    caveat = worn_power_caveat(c.model.charge, hours, power);
-  }
+  const std::string caveat = worn_power_caveat(c.model.charge, f.history);
   if (!caveat.empty()) note("linerlife: note: " + caveat);
 
   if (o.json) {
@@ -173,12 +168,6 @@ int run_forecast_command(const ForecastOptions& o) {
     }
     hist.set("hours", h).set("lifter_height_m", lh).set("face_angle_leading_deg", fa).set("net_power_kw", pw)
         .set("crest_thickness_m", crest).set("liner_mass_kg_per_m", mass).set("min_thickness_m", thin);
-    Json caveats = Json::array();
-    if (!caveat.empty()) {
-      Json t = Json::object();
-      t.set("text", caveat);
-      caveats.push(t);
-    }
     Json j = Json::object();
     j.set("config", c.source)
         .set("method", method_name(c.forecast.method))
@@ -204,7 +193,7 @@ int run_forecast_command(const ForecastOptions& o) {
         .set("charge_simulated_s", f.stats.charge_simulated_s)
         .set("wall_s", f.stats.wall_s)
         .set("charge_notes", drive_notes_json(f.notes))
-        .set("caveats", caveats)
+        .set("caveats", caveats_json(caveat))
         .set("history", hist);
     std::cout << j.dump() << "\n";
   } else {

@@ -14,6 +14,8 @@
 
 namespace linerlife {
 
+struct LifeRecord;
+
 /// Adds a subcommand to `app` and sets `run` to what it does once parsed.
 using RegisterCommand = void (*)(CLI::App& app, std::function<int()>& run);
 
@@ -54,5 +56,9 @@ Json drive_notes_json(const std::vector<DriveNote>& notes);
 constexpr double kWornPowerCaveatFraction = 0.15;
 std::string worn_power_caveat(const std::string& charge_model, const std::vector<double>& hours,
                               const std::vector<double>& net_power_kw);
+/// The same from a forecast's history.
+std::string worn_power_caveat(const std::string& charge_model, const std::vector<LifeRecord>& history);
+/// A caveat as it goes into --json: an array of {text}, empty without one.
+Json caveats_json(const std::string& caveat);
 
 }  // namespace linerlife

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "app/commands.h"
+#include "forecast/forecast.h"
 
 namespace linerlife {
 
@@ -52,6 +53,22 @@ std::string worn_power_caveat(const std::string& charge_model, const std::vector
       "the layer model's rises by up to +57 % (docs/models/layer-worn.md). Read the power history as the layer model's, "
       "not as the mill motor's load (the liner loads come from the same charge)",
       100.0 * dev, p0, net_power_kw[worst], hours[worst]);
+}
+
+std::string worn_power_caveat(const std::string& charge_model, const std::vector<LifeRecord>& history) {
+  std::vector<double> hours, power;
+  for (const LifeRecord& r : history) hours.push_back(r.hours), power.push_back(r.net_power_kw);
+  return worn_power_caveat(charge_model, hours, power);
+}
+
+Json caveats_json(const std::string& caveat) {
+  Json a = Json::array();
+  if (!caveat.empty()) {
+    Json t = Json::object();
+    t.set("text", caveat);
+    a.push(t);
+  }
+  return a;
 }
 
 }  // namespace linerlife

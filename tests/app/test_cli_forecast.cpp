@@ -193,6 +193,9 @@ TEST_CASE("compare --vary forecasts one case per value and ranks them in a table
   for (const auto& c : cases) {
     CHECK(c["mean_net_power_kw"].num() > 0);
     CHECK(is_iso_date(c["relining_date"].str()));
+    // a caveat on the layer model's power history is printed with its case
+    for (const auto& cv : c["caveats"].items())
+      CHECK(r.err.find(c["case"].str() + ": " + cv["text"].str()) != std::string::npos);
   }
   // a value the schema refuses names the case and the key
   const RunResult bad = run_linerlife("compare " + (dir / "m.toml").string() + " --vary liner.lifter_height_m=0.25,-1");
