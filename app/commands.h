@@ -49,7 +49,7 @@ Json drive_notes_json(const std::vector<DriveNote>& notes);
 /// layer model's net power on worn liners is not validated
 /// (docs/models/layer-worn.md): on the bundled Qiu mill it rises by up to
 /// about 57 % over the life where the 2D DEM's, on the same worn profiles,
-/// changes by at most 3 %. When the layer model's power departs from its
+/// changes by at most +3.1 %. When the layer model's power departs from its
 /// new-liner value by more than kWornPowerCaveatFraction anywhere in the
 /// history, the caveat says by how much and where the DEM stands, so that the
 /// history is not read as the motor's load.

@@ -49,7 +49,7 @@ std::string worn_power_caveat(const std::string& charge_model, const std::vector
   // profiles at 0, 3000, 6000 and 9173 h, 20 revolutions each).
   return fmt::format(
       "the layer model's net power moves by {:+.0f} % over this life ({:.0f} kW new, {:.0f} kW at {:.0f} h); its power on "
-      "worn liners is not validated: on the bundled Qiu mill's worn profiles the 2D DEM's changes by at most +3 % where "
+      "worn liners is not validated: on the bundled Qiu mill's worn profiles the 2D DEM's changes by at most +3.1 % where "
       "the layer model's rises by up to +57 % (docs/models/layer-worn.md). Read the power history as the layer model's, "
       "not as the mill motor's load (the liner loads come from the same charge)",
       100.0 * dev, p0, net_power_kw[worst], hours[worst]);
