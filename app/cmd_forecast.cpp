@@ -152,7 +152,6 @@ int run_forecast_command(const ForecastOptions& o) {
   note_drive_notes(f.notes, f.stats.charge_redrives);
   const LifeRecord& last = f.history.back();
   const std::string caveat = worn_power_caveat(c.model.charge, f.history);
-  if (!caveat.empty()) note("linerlife: note: " + caveat);
 
   if (o.json) {
     Json hist = Json::object();
@@ -222,6 +221,9 @@ int run_forecast_command(const ForecastOptions& o) {
     std::cout << fmt::format("  effort                   {} charge drives, {} remeshes, {} CVODE steps, {:.1f} s wall\n",
                              f.stats.charge_redrives, f.stats.remeshes, f.stats.cvode_steps, f.stats.wall_s);
   }
+  // after the summary it qualifies (its net power line)
+  std::cout.flush();
+  if (!caveat.empty()) note("linerlife: note: " + caveat);
 
   if (dir) {
     dir->prepare();
