@@ -236,6 +236,7 @@ int run_forecast_command(const ForecastOptions& o) {
       write_surface(h5, "/final_surface", f.final_surface);
       write_forecast(h5, "/forecast", f, c.forecast);
       h5.attr("/forecast", "partial", 0LL);
+      if (!caveat.empty()) h5.attr("/forecast", "caveat", caveat);  // the file is what is kept
       h5.close();
     }
     dir->commit(tmp, "forecast.h5");

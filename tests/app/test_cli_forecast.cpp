@@ -136,6 +136,10 @@ TEST_CASE("forecast --out writes the results file and its charts; plot redraws t
   for (size_t i = 1; i < mass.size(); ++i) CHECK(mass[i] <= mass[i - 1] + 1e-9);  // wear only removes steel
   const auto ph = h5.doubles("/forecast/profiles/hours");
   CHECK(ph.size() >= 2);
+  // this shortened mill's layer-model power departs by +19 %: the file keeps the caveat the run printed
+  const std::string cav = h5.attr_string("/forecast", "caveat");
+  CHECK_THAT(cav, Catch::Contains("docs/models/layer-worn.md"));
+  CHECK(r.err.find(cav) != std::string::npos);
 
   if (!python_charts_available()) {
     WARN("matplotlib/h5py missing for /usr/bin/python3: charts not checked");
