@@ -218,7 +218,8 @@ TEST_CASE("the Qiu mill's power converges at first order as the relaxation inter
 TEST_CASE("a fast pilot mill converges below a sixteenth of an outer cell of relaxation interval", "[charge][layer]") {
   // docs/models/layer.md §9, "The relaxation interval": pilot test 10 (40 rpm,
   // 19 mm media) changes regime between 1/8 and 1/16 of a cell (the power
-  // falls by 10 %, the toe moves 6 deg) and then stays put: 1/16 and 1/32
+  // falls by 10 %, the toe moves 6 deg; why: the known-issue test below) and
+  // then stays put: 1/16 and 1/32
   // agree to 0.2 % in power and 0.1 deg in toe over 10 revolutions.
   const Config c = mill_config("pilot_test_10.toml");
   const LinerSurface s = build_liner_surface(c.mill, c.liner);
@@ -230,6 +231,27 @@ TEST_CASE("a fast pilot mill converges below a sixteenth of an outer cell of rel
   CHECK(a.net_power_kw == Approx(b.net_power_kw).epsilon(0.01));
   CHECK(angle_diff(a.toe_deg, b.toe_deg) < 1.0);
   CHECK(angle_diff(a.shoulder_deg, b.shoulder_deg) < 1.0);
+}
+
+// Known issue, hidden from the default run (run it with
+// `test_charge "[known-issue]"`): the regime change above is the relaxation
+// rolling held outer-layer elements down in the window between the unheld
+// flight angle and their lifter's later release angle (docs/models/layer.md
+// §9, "Why the fast pilots change regime"). With one flight angle per layer
+// the interval would not matter: the diagnostic build gave 1.037-1.045 kW from
+// 1/2 to 1/32 of a cell; the model as it is gives 1.019 and 0.826 kW.
+TEST_CASE("a lifter-held outer layer is thrown by its lifter whatever the relaxation interval",
+          "[.][charge][layer][known-issue]") {
+  const Config c = mill_config("pilot_test_10.toml");
+  const LinerSurface s = build_liner_surface(c.mill, c.liner);
+  ChargeInput in = charge_input(c, s, 4, 1);
+  in.model.relaxation_interval_cells = 0.5;
+  const ChargeResult a = run_model("layer", in);
+  in.model.relaxation_interval_cells = 1.0 / 16;
+  const ChargeResult b = run_model("layer", in);
+  CHECK(a.indicators.net_power_kw == Approx(b.indicators.net_power_kw).epsilon(0.03));
+  CHECK(angle_diff(a.indicators.toe_deg, b.indicators.toe_deg) < 3.0);
+  CHECK(b.loads.impacts.size() > 0.5 * a.loads.impacts.size());  // the lifters still throw onto the liner
 }
 
 TEST_CASE("a worn (lower) lifter lowers the shoulder", "[charge][layer]") {
