@@ -5,6 +5,7 @@
 // charge.h5 (docs/output.md) and the charts.
 #include <cmath>
 #include <iostream>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -24,7 +25,7 @@ struct ChargeOptions {
   std::string config;
   std::string model;    // "" = from the configuration
   std::string variant;  // "" = from the configuration
-  double revolutions = 0;
+  std::optional<double> revolutions;  // unset: the model's default
   bool json = false;
   std::string out;
 };
@@ -142,6 +143,9 @@ void write_charge_h5(const std::string& path, const Config& c, const LinerSurfac
 }
 
 int run_charge(const ChargeOptions& o) {
+  if (o.revolutions && !(std::isfinite(*o.revolutions) && *o.revolutions > 0 && *o.revolutions <= 1e4))
+    throw InputError("--revolutions",
+                     fmt::format("--revolutions {}: out of range; allowed 0 < value <= 1e4", *o.revolutions));
   Config c = load_config_or_default(o.config);
   if (!o.model.empty()) c.model.charge = o.model;
   if (!o.variant.empty()) c.model.variant = o.variant;
@@ -153,9 +157,14 @@ int run_charge(const ChargeOptions& o) {
   in.charge = c.charge;
   in.model = c.model;
   in.surface = &s;
-  in.revolutions = o.revolutions;
+  in.revolutions = o.revolutions.value_or(0.0);
   in.record_snapshot = !o.out.empty();
-  const ChargeResult r = entry.make()->run(in);
+  ChargeResult r;
+  try {
+    r = entry.make()->run(in);
+  } catch (const InputError& e) {
+    rethrow_located(c, e);  // refused inside the model (the DEM's step): the key's line
+  }
   for (const auto& n : r.notes) note("linerlife: note: " + n);
   const Indicators& I = r.indicators;
   const bool layer = r.model == "layer";
@@ -244,8 +253,8 @@ void register_charge(CLI::App& app, std::function<int()>& run) {
       ->check(CLI::IsMember({"empirical", "layer", "dem"}));
   cmd->add_option("--variant", opts->variant, "Layer model version of thesis §4.6 (default: [model] variant)")
       ->check(CLI::IsMember({"1.0", "1.1", "1.2"}));
-  cmd->add_option("--revolutions", opts->revolutions, "Mill revolutions to average over, after settling (default 2)")
-      ->check(CLI::PositiveNumber);
+  cmd->add_option("--revolutions", opts->revolutions,
+                  "Mill revolutions to average over, after settling (default 2; 0 < N <= 1e4)");
   cmd->add_flag("--json", opts->json, "Print one JSON object instead of the human summary");
   cmd->add_option("--out", opts->out, "Write charge.h5 and charts into this folder");
   cmd->callback([&run, opts] { run = [opts] { return run_charge(*opts); }; });

@@ -4,6 +4,7 @@
 // direct liner impacts.
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -59,6 +60,8 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 int run_compare(const CompareOptions& o) {
   std::vector<Case> cases;
+  std::optional<Config> vary_base;  // --vary: the file whose lines an error points at
+  std::string vary_key;
   if (!o.vary.empty()) {
     if (o.configs.size() > 1)
       throw InputError("--vary", "--vary takes one configuration (or none: the bundled mill); got " +
@@ -72,6 +75,8 @@ int run_compare(const CompareOptions& o) {
     const std::vector<std::string> values = split(o.vary.substr(eq + 1), ',');
     if (values.size() < 2) throw InputError("--vary", fmt::format("--vary {}: give at least two values", o.vary));
     for (const auto& v : values) cases.push_back({key + "=" + v, config_with(base, key, v, "--vary"), {}});
+    vary_base = base;
+    vary_key = key;
   } else {
     if (o.configs.size() < 2)
       throw InputError("compare", "compare needs two or more configurations, or one with --vary KEY=v1,v2,...");
@@ -90,7 +95,13 @@ int run_compare(const CompareOptions& o) {
   for (size_t i = 0; i < cases.size(); ++i) {
     Case& k = cases[i];
     if (!o.json) std::cerr << fmt::format("  forecast {}/{}: {}\n", i + 1, cases.size(), k.label);
-    k.result = run_forecast(setups[i].input, *setups[i].provider, k.config.forecast);
+    try {
+      k.result = run_forecast(setups[i].input, *setups[i].provider, k.config.forecast);
+    } catch (const InputError& e) {
+      // refused inside the forecast: the key's line in the file (a varied
+      // case's own text is generated) unless it is the varied key itself
+      rethrow_located(vary_base && e.key() != vary_key ? *vary_base : k.config, e);
+    }
     if (!k.result.notes.empty()) std::cerr << fmt::format("  {}:\n", k.label);
     note_drive_notes(k.result.notes, k.result.stats.charge_redrives);
     k.mean_power_kw = time_mean(k.result.history, &LifeRecord::net_power_kw);

@@ -119,13 +119,8 @@ int run_forecast_command(const ForecastOptions& o) {
     f = run_forecast(setup.input, *setup.provider, c.forecast, hooks);
   } catch (const InputError& e) {
     // input refused inside the forecast (a criterion the start state already
-    // meets): point at the key's line, with its value
-    const std::string& key = e.key();
-    const auto dot = key.find('.');
-    const KeySpec* spec = dot == std::string::npos ? nullptr : config_schema().find(key.substr(0, dot), key.substr(dot + 1));
-    const std::optional<ConfigValue> v = spec && spec->get ? spec->get(c) : std::nullopt;
-    if (!v || v->kind != ConfigValue::Kind::Real) throw;
-    throw InputError(key, fmt::format("{}{} = {}: {}", config_location(c, key), key.substr(dot + 1), v->real, e.what()));
+    // meets, the DEM's step): point at the key's line, with its value
+    rethrow_located(c, e);
   } catch (const SimulationError&) {
     if (hooks.progress) std::fprintf(stderr, "\n");
     // the results so far, marked partial; the checkpoint stays for a look

@@ -101,7 +101,13 @@ int run_wear_command(const WearOptions& o) {
         last_pct = pct;
       }
     };
-  const WearRunResult r = run_wear(in, entry);
+  WearRunResult r;
+  try {
+    r = run_wear(in, entry);
+  } catch (const InputError& e) {
+    if (tty) std::fprintf(stderr, "\n");
+    rethrow_located(c, e);  // refused inside the model (the DEM's step): the key's line
+  }
   if (tty) std::fprintf(stderr, "\r            \r");
   note_drive_notes(r.notes, r.charge_drives);
 

@@ -11,6 +11,7 @@
 #include "app/config.h"
 #include "app/json.h"
 #include "charge/drive_notes.h"
+#include "geometry/errors.h"
 
 namespace linerlife {
 
@@ -36,6 +37,13 @@ Config load_config_or_default(const std::string& path);
 
 /// Prints a summary line to stderr unless quiet.
 void note(const std::string& text);
+
+/// An InputError raised while running a model on configuration `c` (the DEM's
+/// step beyond the stable range, a criterion the start state already meets),
+/// with the location of its key in the configuration ("FILE:LINE: ") and,
+/// where the message does not quote it, "name = value: ". Errors already
+/// located, and keys that are not "section.name", are rethrown unchanged.
+[[noreturn]] void rethrow_located(const Config& c, const InputError& e);
 
 /// The charge model's notes gathered over `drives` drives (a forecast's, a
 /// wear run's), one line each on stderr: "linerlife: note: in N of M charge

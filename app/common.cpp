@@ -1,5 +1,6 @@
 #include <cmath>
 #include <iostream>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -15,6 +16,22 @@ Config load_config_or_default(const std::string& path) {
 }
 
 void note(const std::string& text) { std::cerr << text << "\n"; }
+
+void rethrow_located(const Config& c, const InputError& e) {
+  const std::string msg = e.what();
+  const std::string& key = e.key();
+  const auto dot = key.find('.');
+  if (dot == std::string::npos || msg.rfind(c.source + ":", 0) == 0) throw e;
+  const std::string name = key.substr(dot + 1);
+  const KeySpec* spec = config_schema().find(key.substr(0, dot), name);
+  if (!spec) throw e;
+  std::string quoted;
+  if (msg.find(name + " = ") == std::string::npos) {
+    const std::optional<ConfigValue> v = spec->get ? spec->get(c) : std::nullopt;
+    if (v && v->kind == ConfigValue::Kind::Real) quoted = fmt::format("{} = {}: ", name, v->real);
+  }
+  throw InputError(key, config_location(c, key) + quoted + msg);
+}
 
 void note_drive_notes(const std::vector<DriveNote>& notes, long long drives) {
   for (const DriveNote& n : notes)

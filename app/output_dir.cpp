@@ -27,7 +27,10 @@ void check_output_dir_writable(const std::string& dir) {
   }
   fs::path parent = p.parent_path();
   while (!parent.empty() && !fs::exists(parent, ec)) parent = parent.parent_path();
-  if (parent.empty() || !fs::is_directory(parent, ec) || access(parent.c_str(), W_OK | X_OK) != 0)
+  if (!parent.empty() && !fs::is_directory(parent, ec))
+    throw InputError(dir, fmt::format("output folder {} cannot be created: {} is a file, not a folder", dir,
+                                      parent.string()));
+  if (parent.empty() || access(parent.c_str(), W_OK | X_OK) != 0)
     throw InputError(dir, fmt::format("output folder {} cannot be created: {} is not writable", dir,
                                       parent.empty() ? std::string("its parent") : parent.string()));
 }

@@ -65,9 +65,10 @@ MeasuredHistory parse_measured_history(const std::string& text, const std::strin
         throw InputError(source, fmt::format("{}:{}: hours = {} after a profile at {} h: the profiles must be in "
                                              "order of increasing hours",
                                              source, lineno, hr, h.snapshots.back().hours));
-      h.snapshots.push_back({hr, {}, lineno});
+      h.snapshots.push_back({hr, {}, lineno, {}});
     }
     h.snapshots.back().points.emplace_back(x, y);
+    h.snapshots.back().lines.push_back(lineno);
   }
   if (h.snapshots.empty()) throw InputError(source, fmt::format("{}: no measured profile in the file", source));
   for (const auto& s : h.snapshots)
@@ -94,6 +95,7 @@ void validate_measured_history(const MeasuredHistory& h, double R, int segments)
     MeasuredProfile p;
     p.source = fmt::format("{}:{} (profile at {} h)", h.source, s.first_line, s.hours);
     p.points = s.points;
+    p.lines = s.lines;
     validate_measured_profile(p, R, segments);
   }
 }

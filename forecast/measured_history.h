@@ -14,6 +14,7 @@ struct MeasuredSnapshot {
   double hours = 0;                     // [h] operating hours since the liner was new
   std::vector<Eigen::Vector2d> points;  // (x, y) [m] in the unrolled frame of profile_csv (x along the shell, y thickness)
   int first_line = 0;                   // line of the file where it starts (for messages)
+  std::vector<int> lines;               // line of the file of each point (for messages)
 };
 
 struct MeasuredHistory {

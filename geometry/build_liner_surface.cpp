@@ -137,14 +137,25 @@ void validate_lifter_design(const Mill& mill, int segments, const LifterDesign& 
                                  "quarter of the lifter height and top width ({:.4g} m)",
                                  h, 0.25 * feature));
   const Trapezoid t = trapezoid(R, d, +1);
-  const double half_base = std::max(std::abs(polar_angle(t.lead_foot)), std::abs(polar_angle(t.trail_foot)));
+  const double lead_half = std::abs(polar_angle(t.lead_foot)), trail_half = std::abs(polar_angle(t.trail_foot));
+  const double half_base = std::max(lead_half, trail_half);
   const double plate_left = (0.5 * seg - half_base) * rp;  // plate arc on each side of the lifter
-  if (plate_left < h)
-    throw InputError(key("face_angle_leading_deg"),
-                     fmt::format("the lifter base ({:.4g} m wide at the plate, from lifter_top_width_m, lifter_height_m "
-                                 "and the face angles) does not fit in its segment ({:.4g} m) with at least one surface "
-                                 "element ({} m) of plate on each side",
-                                 2 * half_base * rp, seg * rp, h));
+  if (plate_left < h) {
+    // the face whose foot reaches furthest from the lifter's centre line
+    // carries the blame (and the line number); every value that sets the
+    // base is quoted
+    const bool lead = lead_half >= trail_half;
+    const char* name = lead ? "face_angle_leading_deg" : "face_angle_trailing_deg";
+    throw InputError(key(name),
+                     fmt::format("{} = {} deg: the lifter base ({:.4g} m wide at the plate, from lifter_top_width_m = {} m, "
+                                 "lifter_height_m = {} m, face_angle_leading_deg = {} deg and face_angle_trailing_deg = {} "
+                                 "deg) does not fit in its segment ({:.4g} m) with at least one surface element ({} m) of "
+                                 "plate on each side; make the faces steeper (smaller angles), the lifter narrower or "
+                                 "lower, or use fewer segments",
+                                 name, lead ? d.face_angle_leading_deg : d.face_angle_trailing_deg, 2 * half_base * rp,
+                                 d.top_width_m, d.lifter_height_m, d.face_angle_leading_deg, d.face_angle_trailing_deg,
+                                 seg * rp, h));
+  }
   if (d.corner_radius_m < 0)
     throw InputError(key("corner_radius_m"), fmt::format("corner_radius_m = {} m: must be >= 0", d.corner_radius_m));
 }

@@ -35,6 +35,7 @@ struct LifterDesign {
 struct MeasuredProfile {
   std::string source;                  // file it came from (for messages)
   std::vector<Eigen::Vector2d> points;  // (x, y) [m]
+  std::vector<int> lines;               // line of the file of each point (for messages); empty if not from a file
 };
 
 /// How a full ring of liners is built.

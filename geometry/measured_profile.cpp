@@ -50,12 +50,14 @@ bool segments_intersect(const V& p1, const V& p2, const V& q1, const V& q2) {
 
 }  // namespace
 
-bool polyline_self_intersects(const std::vector<V>& pts) {
+bool polyline_self_intersects(const std::vector<V>& pts) { return first_self_crossing(pts).first >= 0; }
+
+std::pair<int, int> first_self_crossing(const std::vector<V>& pts) {
   const int n = static_cast<int>(pts.size());
   for (int i = 0; i + 1 < n; ++i)
     for (int j = i + 2; j + 1 < n; ++j)
-      if (segments_intersect(pts[i], pts[i + 1], pts[j], pts[j + 1])) return true;
-  return false;
+      if (segments_intersect(pts[i], pts[i + 1], pts[j], pts[j + 1])) return {i, j};
+  return {-1, -1};
 }
 
 MeasuredProfile parse_profile_csv(const std::string& text, const std::string& source) {
@@ -87,6 +89,7 @@ MeasuredProfile parse_profile_csv(const std::string& text, const std::string& so
     if (!std::isfinite(x) || !std::isfinite(y))
       throw InputError(source, fmt::format("{}:{}: non-finite value in \"{}\"", source, lineno, t));
     p.points.emplace_back(x, y);
+    p.lines.push_back(lineno);
   }
   if (p.points.size() < 3)
     throw InputError(source, fmt::format("{}: a profile needs at least 3 points, found {}", source, p.points.size()));
@@ -109,38 +112,46 @@ MeasuredProfile load_profile_csv(const std::string& path) {
 void validate_measured_profile(const MeasuredProfile& p, double R, int segments) {
   const double width = 2 * kPi * R / segments;
   const auto& pts = p.points;
+  // "point 3 (line 5)": the point's number and, for a file, its line
+  auto pt = [&](size_t i) {
+    return i < p.lines.size() && p.lines.size() == pts.size() ? fmt::format("point {} (line {})", i + 1, p.lines[i])
+                                                              : fmt::format("point {}", i + 1);
+  };
   const double tol = 1e-3;
   if (std::abs(pts.front().x()) > tol || std::abs(pts.back().x() - width) > tol)
     throw InputError(p.source, fmt::format("{}: x must run from 0 to the segment width pi D / segments = {:.4f} m "
-                                           "(within 1 mm); it runs from {:.4f} to {:.4f} m",
-                                           p.source, width, pts.front().x(), pts.back().x()));
+                                           "(within 1 mm); it runs from {:.4f} m at {} to {:.4f} m at {}",
+                                           p.source, width, pts.front().x(), pt(0), pts.back().x(), pt(pts.size() - 1)));
   for (size_t i = 0; i < pts.size(); ++i) {
     if (pts[i].x() < -tol || pts[i].x() > width + tol)
-      throw InputError(p.source, fmt::format("{}: point {} has x = {} m, outside its segment [0, {:.4f}] m", p.source,
-                                             i + 1, pts[i].x(), width));
+      throw InputError(p.source, fmt::format("{}: {} has x = {} m, outside its segment [0, {:.4f}] m", p.source,
+                                             pt(i), pts[i].x(), width));
     if (!(pts[i].y() > 0))
-      throw InputError(p.source, fmt::format("{}: point {} has y = {} m: the profile must stay inside the shell "
+      throw InputError(p.source, fmt::format("{}: {} has y = {} m: the profile must stay inside the shell "
                                              "(thickness y > 0)",
-                                             p.source, i + 1, pts[i].y()));
+                                             p.source, pt(i), pts[i].y()));
     if (!(pts[i].y() < 0.5 * R))
-      throw InputError(p.source, fmt::format("{}: point {} has y = {} m: thicker than half the shell radius ({:.4g} m)",
-                                             p.source, i + 1, pts[i].y(), 0.5 * R));
+      throw InputError(p.source, fmt::format("{}: {} has y = {} m: thicker than half the shell radius ({:.4g} m)",
+                                             p.source, pt(i), pts[i].y(), 0.5 * R));
   }
   if (std::abs(pts.front().y() - pts.back().y()) > tol)
-    throw InputError(p.source, fmt::format("{}: the first and last thickness differ ({} vs {} m); the profile repeats "
-                                           "round the ring, so both ends must match within 1 mm",
-                                           p.source, pts.front().y(), pts.back().y()));
+    throw InputError(p.source, fmt::format("{}: the first and last thickness differ ({} m at {} vs {} m at {}); the "
+                                           "profile repeats round the ring, so both ends must match within 1 mm",
+                                           p.source, pts.front().y(), pt(0), pts.back().y(), pt(pts.size() - 1)));
   // A radial step on a segment edge (the next point still on the edge) makes
   // the ring run back along the edge between two segments; the remesh cannot
   // keep such an edge simple (fuzz_remesh, corpus remesh-crash-f307528c and
   // remesh-crash-d0914b3b).
   const size_t n = pts.size();
   if (pts[1].x() <= tol || pts[n - 2].x() >= width - tol)
-    throw InputError(p.source, fmt::format("{}: point {} lies on the segment edge as well as point {}: a radial step on "
+    throw InputError(p.source, fmt::format("{}: {} lies on the segment edge as well as {}: a radial step on "
                                            "the edge is not allowed; move it at least 1 mm into the segment",
-                                           p.source, pts[1].x() <= tol ? 2 : n - 1, pts[1].x() <= tol ? 1 : n));
-  if (polyline_self_intersects(pts))
-    throw InputError(p.source, fmt::format("{}: the profile crosses itself", p.source));
+                                           p.source, pts[1].x() <= tol ? pt(1) : pt(n - 2), pts[1].x() <= tol ? pt(0) : pt(n - 1)));
+  const auto [a, b] = first_self_crossing(pts);
+  if (a >= 0)
+    throw InputError(p.source, fmt::format("{}: the profile crosses itself: the stretch from {} to {} crosses the one "
+                                           "from {} to {}",
+                                           p.source, pt(a), pt(a + 1), pt(b), pt(b + 1)));
 }
 
 std::vector<V> measured_profile_to_segment(const MeasuredProfile& p, double R, int segments, double h) {

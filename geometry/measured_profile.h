@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -43,5 +44,9 @@ std::vector<Eigen::Vector2d> segment_to_profile_xy(const std::vector<Eigen::Vect
 /// Whether an open polyline crosses itself (segments that are not neighbours
 /// touch or cross). O(n^2), for input validation and tests.
 bool polyline_self_intersects(const std::vector<Eigen::Vector2d>& pts);
+
+/// The first pair (i, j), i < j, of non-neighbouring stretches (points i to
+/// i + 1 and j to j + 1) that touch or cross; (-1, -1) if none.
+std::pair<int, int> first_self_crossing(const std::vector<Eigen::Vector2d>& pts);
 
 }  // namespace linerlife

@@ -147,9 +147,10 @@ TEST_CASE("measured profile files given to calibrate exit 2 naming the file, lin
       {"text.csv", {"text.csv:3:", "\"1000,abc,0.07\""}},
       {"nan.csv", {"nan.csv:3:", "\"1000,0.25,nan\""}},
       {"spaces.csv", {"spaces.csv:1:", "expected three numbers \"hours,x_m,y_m\""}},
-      {"crossing.csv", {"crossing.csv:2 (profile at 1000 h)", "crosses itself"}},
-      {"outside.csv", {"outside.csv:2 (profile at 1000 h)", "y = -0.01 m", "inside the shell"}},
-      {"wide.csv", {"wide.csv:2 (profile at 1000 h)", "segment width", "0.9000 m"}},
+      {"crossing.csv", {"crossing.csv:2 (profile at 1000 h)", "crosses itself",
+                        "from point 1 (line 2) to point 2 (line 3) crosses the one from point 3 (line 4) to point 4 (line 5)"}},
+      {"outside.csv", {"outside.csv:2 (profile at 1000 h)", "point 2 (line 3) has y = -0.01 m", "inside the shell"}},
+      {"wide.csv", {"wide.csv:2 (profile at 1000 h)", "segment width", "0.9000 m at point 3 (line 4)"}},
       {"unsorted.csv", {"unsorted.csv:5: hours = 500 after a profile at 1000 h", "increasing hours"}},
       {"negative.csv", {"negative.csv:2: hours = -5", "must be >= 0"}},
       {"two.csv", {"two.csv:2:", "has 2 points; at least 3"}},
@@ -328,6 +329,39 @@ TEST_CASE("a relaxation interval out of range is refused naming the key, value a
   fs::remove_all(dir);
 }
 
+TEST_CASE("a DEM step beyond the stable range is refused at its line by every command that runs the DEM",
+          "[app][cli][input]") {
+  // docs/reliability.md, known issue 5: the refusal comes from inside the
+  // model run, after the configuration was read; it now points at the line
+  const fs::path dir = temp_dir("dem_step");
+  std::string t = defaults_with("# time_step_s = ...", "time_step_s = 0.01");
+  const auto pos = t.find("\ncharge = \"layer\"");
+  REQUIRE(pos != std::string::npos);
+  t.replace(pos + 1, std::string("charge = \"layer\"").size(), "charge = \"dem\"");
+  write_file(dir / "dem.toml", t);
+  int line = 0, n = 0;
+  for (size_t p = 0; p < t.size() && !line; p = t.find('\n', p) + 1) {
+    ++n;
+    const size_t dem = t.rfind("\n[dem]", p), model = t.rfind("\n[model]", p);
+    if (t.compare(p, 19, "time_step_s = 0.01\n") == 0 && dem != std::string::npos && (model == std::string::npos || dem > model))
+      line = n;
+  }
+  REQUIRE(line > 0);
+  const std::string where = (dir / "dem.toml").string() + ":" + std::to_string(line) + ": [dem] time_step_s: time_step_s = 0.01 s";
+  const fs::path out = dir / "out";
+  for (const std::string cmd : {"charge", "wear", "forecast --quiet", "compare --vary liner.face_angle_leading_deg=15,20"}) {
+    const std::string args = cmd.substr(0, cmd.find(' ')) + " " + (dir / "dem.toml").string() +
+                             (cmd.find(' ') == std::string::npos ? "" : cmd.substr(cmd.find(' '))) + " --out " + out.string();
+    const RunResult r = run_linerlife(args, 60);
+    INFO(args << "\n" << r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains(where));
+    CHECK_THAT(r.err, Catch::Contains("allowed time_step_s <="));
+    CHECK_FALSE(fs::exists(out));
+  }
+  fs::remove_all(dir);
+}
+
 TEST_CASE("an output folder that cannot be written, or a checkpoint that is not one, is refused before any work",
           "[app][cli][input]") {
   const fs::path dir = temp_dir("bad_out");
@@ -336,6 +370,12 @@ TEST_CASE("an output folder that cannot be written, or a checkpoint that is not 
   RunResult r = run_linerlife("geometry --out " + (dir / "afile").string());
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Contains("output folder " + (dir / "afile").string() + " exists and is not a folder"));
+  CHECK(read_file((dir / "afile").string()) == "x");
+  // --out names a folder inside a file: said so (not "not writable"), the file untouched
+  r = run_linerlife("geometry --out " + (dir / "afile" / "sub").string());
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("output folder " + (dir / "afile" / "sub").string() + " cannot be created: " +
+                                    (dir / "afile").string() + " is a file, not a folder"));
   CHECK(read_file((dir / "afile").string()) == "x");
 
   // a folder without write permission, and a folder inside one, for each command that writes

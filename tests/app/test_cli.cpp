@@ -86,6 +86,17 @@ TEST_CASE("bad input exits 2 with a message and creates no output", "[app][cli][
   r = run_linerlife("geometry --out " + (dir / "file" / "sub").string());
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Contains("cannot be created"));
+  // --revolutions out of range: the value and the range, in a line a person can read
+  // (it once quoted DBL_MAX in 300 digits as the upper bound)
+  for (const char* v : {"-1", "0", "1e9"}) {
+    r = run_linerlife("charge --revolutions " + std::string(v) + " --out " + out.string());
+    INFO(v << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("--revolutions"));
+    CHECK_THAT(r.err, Catch::Contains("allowed 0 < value <= 1e4"));
+    CHECK(r.err.size() < 200);
+    CHECK_FALSE(fs::exists(out));
+  }
   fs::remove_all(dir);
 }
 

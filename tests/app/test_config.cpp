@@ -125,6 +125,13 @@ TEST_CASE("physically impossible mills are refused naming the key and the line",
   refused(edited("liner", "lifter_top_width_m", "0.6"), {"lifter_top_width_m", "narrower than the segment"});
   refused(edited("liner", "face_angle_leading_deg", "80.0"), {"face_angle_leading_deg = 80", "out of range"});
   refused(edited("liner", "face_angle_leading_deg", "45.0"), {"does not fit in its segment"});
+  {
+    // the trailing face makes the base too wide: its own line and value
+    // (docs/reliability.md, known issue 5)
+    const std::string t = edited("liner", "face_angle_trailing_deg", "50.0");
+    refused(t, {"mill.toml:" + std::to_string(line_of(t, "face_angle_trailing_deg = 50.0")),
+                "face_angle_trailing_deg = 50 deg", "face_angle_leading_deg = 20 deg", "does not fit in its segment"});
+  }
   refused(edited("mill", "speed_rpm", "13.5"), {"speed_rpm = 13.5", "of the critical speed", "centrifuges"});
   refused(edited("charge", "ball_filling", "0.3"), {"ball_filling = 0.3 is larger than filling = 0.24"});
   refused(edited("charge", "ball_diameter_m", "0.3"), {"ball_diameter_m = 0.3", "spacing between lifters"});
