@@ -2,6 +2,7 @@
 // independence of the element ordering, time-step convergence against a finer
 // run, the effect of a worn lifter, the versions, refused input, the
 // incremental bookkeeping against full sweeps, and staggered initial phases.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -238,8 +239,12 @@ TEST_CASE("a fast pilot mill converges below a sixteenth of an outer cell of rel
 // rolling held outer-layer elements down in the window between the unheld
 // flight angle and their lifter's later release angle (docs/models/layer.md
 // §9, "Why the fast pilots change regime"). With one flight angle per layer
-// the interval would not matter: the diagnostic build gave 1.037-1.045 kW from
-// 1/2 to 1/32 of a cell; the model as it is gives 1.019 and 0.826 kW.
+// the interval would not matter: a diagnostic build with the lifter's angle in
+// the relaxation's test gave 1.037-1.045 kW from 1/2 to 1/32 of a cell (10
+// revolutions), where the model as it is gives 1.019 and 0.826 kW. This test
+// (4 revolutions) passes with the consistent-angle scratch build described
+// there and fails with the model as it is (toe 16 deg apart, direct impacts
+// 181 -> 1).
 TEST_CASE("a lifter-held outer layer is thrown by its lifter whatever the relaxation interval",
           "[.][charge][layer][known-issue]") {
   const Config c = mill_config("pilot_test_10.toml");
@@ -251,7 +256,10 @@ TEST_CASE("a lifter-held outer layer is thrown by its lifter whatever the relaxa
   const ChargeResult b = run_model("layer", in);
   CHECK(a.indicators.net_power_kw == Approx(b.indicators.net_power_kw).epsilon(0.03));
   CHECK(angle_diff(a.indicators.toe_deg, b.indicators.toe_deg) < 3.0);
-  CHECK(b.loads.impacts.size() > 0.5 * a.loads.impacts.size());  // the lifters still throw onto the liner
+  auto direct = [](const ChargeResult& r) {
+    return std::count_if(r.loads.impacts.begin(), r.loads.impacts.end(), [](const ImpactEvent& e) { return e.direct; });
+  };
+  CHECK(direct(b) > 0.5 * direct(a));  // the lifters still throw onto the liner
 }
 
 TEST_CASE("a worn (lower) lifter lowers the shoulder", "[charge][layer]") {
