@@ -4,7 +4,6 @@
 // direct liner impacts.
 #include <cmath>
 #include <iostream>
-#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -58,10 +57,17 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return out;
 }
 
+/// An error of one case, located in its configuration; a --vary case's
+/// message says which case ("--vary KEY=V: ...") unless it already does.
+InputError in_case(const Case& k, const InputError& e) {
+  const InputError l = located(k.config, e);
+  const auto o = k.config.key_origin.begin();  // --vary: the one key config_with() set
+  if (k.config.key_origin.size() != 1 || std::string(l.what()).rfind(o->second + ":", 0) == 0) return l;
+  return InputError(l.key(), o->second + ": " + l.what());
+}
+
 int run_compare(const CompareOptions& o) {
   std::vector<Case> cases;
-  std::optional<Config> vary_base;  // --vary: the file whose lines an error points at
-  std::string vary_key;
   if (!o.vary.empty()) {
     if (o.configs.size() > 1)
       throw InputError("--vary", "--vary takes one configuration (or none: the bundled mill); got " +
@@ -75,8 +81,6 @@ int run_compare(const CompareOptions& o) {
     const std::vector<std::string> values = split(o.vary.substr(eq + 1), ',');
     if (values.size() < 2) throw InputError("--vary", fmt::format("--vary {}: give at least two values", o.vary));
     for (const auto& v : values) cases.push_back({key + "=" + v, config_with(base, key, v, "--vary"), {}});
-    vary_base = base;
-    vary_key = key;
   } else {
     if (o.configs.size() < 2)
       throw InputError("compare", "compare needs two or more configurations, or one with --vary KEY=v1,v2,...");
@@ -90,7 +94,11 @@ int run_compare(const CompareOptions& o) {
       k.config.forecast.method = o.method == "amplify" ? ForecastMethod::Amplify
                                  : o.method == "euler" ? ForecastMethod::Euler
                                                        : ForecastMethod::Ode;
-    setups.push_back(make_forecast_setup(k.config));
+    try {
+      setups.push_back(make_forecast_setup(k.config));
+    } catch (const InputError& e) {
+      throw in_case(k, e);
+    }
   }
   for (size_t i = 0; i < cases.size(); ++i) {
     Case& k = cases[i];
@@ -98,9 +106,7 @@ int run_compare(const CompareOptions& o) {
     try {
       k.result = run_forecast(setups[i].input, *setups[i].provider, k.config.forecast);
     } catch (const InputError& e) {
-      // refused inside the forecast: the key's line in the file (a varied
-      // case's own text is generated) unless it is the varied key itself
-      rethrow_located(vary_base && e.key() != vary_key ? *vary_base : k.config, e);
+      throw in_case(k, e);  // refused inside the forecast: the key's line, this case's value
     }
     if (!k.result.notes.empty()) std::cerr << fmt::format("  {}:\n", k.label);
     note_drive_notes(k.result.notes, k.result.stats.charge_redrives);

@@ -88,6 +88,12 @@ int run_forecast_command(const ForecastOptions& o) {
   // checkpoints go to DIR/checkpoint.h5; --resume continues from it
   ForecastHooks hooks;
   hooks.progress = progress_bar(o.quiet);
+  bool drew = false;  // a progress line is on the terminal: end it before a message
+  if (hooks.progress)
+    hooks.progress = [bar = hooks.progress, &drew](double hours, double fraction) {
+      drew = true;
+      bar(hours, fraction);
+    };
   hooks.checkpoint_interval_s = c.forecast.checkpoint_interval_s;
   ForecastCheckpoint resume_from;
   std::unique_ptr<OutputDir> dir;
@@ -120,9 +126,10 @@ int run_forecast_command(const ForecastOptions& o) {
   } catch (const InputError& e) {
     // input refused inside the forecast (a criterion the start state already
     // meets, the DEM's step): point at the key's line, with its value
+    if (drew) std::fprintf(stderr, "\n");
     rethrow_located(c, e);
   } catch (const SimulationError&) {
-    if (hooks.progress) std::fprintf(stderr, "\n");
+    if (drew) std::fprintf(stderr, "\n");
     // the results so far, marked partial; the checkpoint stays for a look
     if (dir && !partial.history.empty()) {
       dir->prepare();
@@ -143,7 +150,7 @@ int run_forecast_command(const ForecastOptions& o) {
     }
     throw;
   }
-  if (hooks.progress) std::fprintf(stderr, "\n");
+  if (drew) std::fprintf(stderr, "\n");
   note_drive_notes(f.notes, f.stats.charge_redrives);
   const LifeRecord& last = f.history.back();
   const std::string caveat = worn_power_caveat(c.model.charge, f.history);

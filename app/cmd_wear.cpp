@@ -105,7 +105,7 @@ int run_wear_command(const WearOptions& o) {
   try {
     r = run_wear(in, entry);
   } catch (const InputError& e) {
-    if (tty) std::fprintf(stderr, "\n");
+    if (last_pct >= 0) std::fprintf(stderr, "\r            \r");  // the progress line, if one was drawn
     rethrow_located(c, e);  // refused inside the model (the DEM's step): the key's line
   }
   if (tty) std::fprintf(stderr, "\r            \r");

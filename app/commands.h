@@ -44,6 +44,8 @@ void note(const std::string& text);
 /// where the message does not quote it, "name = value: ". Errors already
 /// located, and keys that are not "section.name", are rethrown unchanged.
 [[noreturn]] void rethrow_located(const Config& c, const InputError& e);
+/// The same error, located, without throwing it.
+InputError located(const Config& c, const InputError& e);
 
 /// The charge model's notes gathered over `drives` drives (a forecast's, a
 /// wear run's), one line each on stderr: "linerlife: note: in N of M charge

@@ -1,3 +1,4 @@
+#include <cctype>
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -17,20 +18,31 @@ Config load_config_or_default(const std::string& path) {
 
 void note(const std::string& text) { std::cerr << text << "\n"; }
 
-void rethrow_located(const Config& c, const InputError& e) {
+void rethrow_located(const Config& c, const InputError& e) { throw located(c, e); }
+
+InputError located(const Config& c, const InputError& e) {
   const std::string msg = e.what();
   const std::string& key = e.key();
   const auto dot = key.find('.');
-  if (dot == std::string::npos || msg.rfind(c.source + ":", 0) == 0) throw e;
+  const std::string& file = c.lines_source.empty() ? c.source : c.lines_source;
+  const auto origin = c.key_origin.find(key);
+  if (dot == std::string::npos || msg.rfind(c.source + ":", 0) == 0 || msg.rfind(file + ":", 0) == 0 ||
+      (origin != c.key_origin.end() && msg.rfind(origin->second + ":", 0) == 0))
+    return e;  // already located
   const std::string name = key.substr(dot + 1);
   const KeySpec* spec = config_schema().find(key.substr(0, dot), name);
-  if (!spec) throw e;
+  if (!spec) return e;
+  // whether the message already names the key ("name = ..." as a whole word,
+  // or "[section] name: ..." as the DEM's refusals do)
+  bool named = msg.find("] " + name + ":") != std::string::npos;
+  for (size_t p = msg.find(name + " = "); p != std::string::npos && !named; p = msg.find(name + " = ", p + 1))
+    named = p == 0 || !(std::isalnum(static_cast<unsigned char>(msg[p - 1])) || msg[p - 1] == '_');
   std::string quoted;
-  if (msg.find(name + " = ") == std::string::npos) {
+  if (!named) {
     const std::optional<ConfigValue> v = spec->get ? spec->get(c) : std::nullopt;
     if (v && v->kind == ConfigValue::Kind::Real) quoted = fmt::format("{} = {}: ", name, v->real);
   }
-  throw InputError(key, config_location(c, key) + quoted + msg);
+  return InputError(key, config_location(c, key) + quoted + msg);
 }
 
 void note_drive_notes(const std::vector<DriveNote>& notes, long long drives) {

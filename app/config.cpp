@@ -126,14 +126,17 @@ const Schema& config_schema() {
 }
 
 std::string config_location(const Config& c, const std::string& key) {
+  const auto o = c.key_origin.find(key);
+  if (o != c.key_origin.end()) return o->second + ": ";
+  const std::string& file = c.lines_source.empty() ? c.source : c.lines_source;
   auto it = c.key_lines.find(key);
-  if (it != c.key_lines.end()) return fmt::format("{}:{}: ", c.source, it->second);
+  if (it != c.key_lines.end()) return fmt::format("{}:{}: ", file, it->second);
   const auto dot = key.find('.');
   if (dot != std::string::npos) {
     auto st = c.section_lines.find(key.substr(0, dot));
-    if (st != c.section_lines.end() && st->second > 0) return fmt::format("{}:{}: ", c.source, st->second);
+    if (st != c.section_lines.end() && st->second > 0) return fmt::format("{}:{}: ", file, st->second);
   }
-  return c.source + ": ";
+  return file + ": ";
 }
 
 namespace {

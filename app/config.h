@@ -40,6 +40,11 @@ struct Config {
 
   std::map<std::string, int> key_lines;  // "section.key" -> line in the source (1-based)
   std::map<std::string, int> section_lines;
+  // A configuration derived from a file by config_with() (compare --vary):
+  // the file the lines above refer to, and where each changed key was set
+  // ("--vary liner.face_angle_leading_deg=15"), for config_location().
+  std::string lines_source;                     // "" = source
+  std::map<std::string, std::string> key_origin;  // "section.key" -> where it was set
 };
 
 /// A configuration value as TOML holds it.
@@ -122,7 +127,8 @@ const std::string& default_config_text();
 /// unit and allowed range. Loading it back gives the same configuration.
 std::string config_to_toml(const Config& c, bool annotate);
 
-/// "FILE:LINE: " for the key "section.name" if known, else "FILE: ".
+/// "FILE:LINE: " for the key "section.name" if known, else "FILE: "; for a
+/// key set by config_with(), where it was set ("--vary KEY=V: ").
 std::string config_location(const Config& c, const std::string& key);
 
 }  // namespace linerlife

@@ -1,5 +1,7 @@
 #include "app/config_edit.h"
 
+#include <cctype>
+
 #include <fmt/format.h>
 
 #include "geometry/errors.h"
@@ -31,11 +33,33 @@ Config config_with(const Config& c, const std::string& section_key, const std::s
     const auto o = text.find("\n" + other + " = ");
     if (o != std::string::npos) text.erase(o + 1, text.find('\n', o + 1) - o);
   }
+  // The printed text has its own line numbers; messages point at the lines
+  // of the file it came from, and at the option for the changed key.
+  const std::string printed = fmt::format("{} ({} = {})", c.source, section_key, value);
+  const std::string origin = fmt::format("{} {}={}", what, section_key, value);
+  Config r;
   try {
-    return load_config_text(text, fmt::format("{} ({} = {})", c.source, section_key, value), c.base_dir);
+    r = load_config_text(text, printed, c.base_dir);
   } catch (const InputError& e) {
-    throw InputError(what, fmt::format("{} {}={}: {}", what, section_key, value, e.what()));
+    // "PRINTED:LINE: message" -> "ORIGIN: FILE:LINE: message" (or "ORIGIN: message" for the changed key)
+    std::string msg = e.what();
+    if (msg.rfind(printed + ":", 0) == 0) {
+      size_t p = printed.size() + 1;
+      while (p < msg.size() && std::isdigit(static_cast<unsigned char>(msg[p]))) ++p;
+      if (msg.compare(p, 2, ": ") == 0) p += 2;
+      else if (p < msg.size() && msg[p] == ' ') ++p;
+      Config lines = c;
+      lines.source = c.lines_source.empty() ? c.source : c.lines_source;
+      msg = (e.key() == section_key ? std::string() : config_location(lines, e.key())) + msg.substr(p);
+    }
+    throw InputError(what, fmt::format("{}: {}", origin, msg));
   }
+  r.lines_source = c.lines_source.empty() ? c.source : c.lines_source;
+  r.key_lines = c.key_lines;
+  r.section_lines = c.section_lines;
+  r.key_origin = c.key_origin;
+  r.key_origin[section_key] = origin;
+  return r;
 }
 
 }  // namespace linerlife

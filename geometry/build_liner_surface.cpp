@@ -141,20 +141,28 @@ void validate_lifter_design(const Mill& mill, int segments, const LifterDesign& 
   const double half_base = std::max(lead_half, trail_half);
   const double plate_left = (0.5 * seg - half_base) * rp;  // plate arc on each side of the lifter
   if (plate_left < h) {
-    // the face whose foot reaches furthest from the lifter's centre line
-    // carries the blame (and the line number); every value that sets the
-    // base is quoted
+    // The blame (and the line number): for the lifter, the face whose foot
+    // reaches furthest from its centre line; for the low lifter of a hi-lo
+    // liner, which shares the faces with the high one that fitted, its top
+    // width. Every value that sets the base is quoted, with what is allowed.
+    const bool low = std::string(prefix) == "liner.low_";
     const bool lead = lead_half >= trail_half;
-    const char* name = lead ? "face_angle_leading_deg" : "face_angle_trailing_deg";
-    throw InputError(key(name),
-                     fmt::format("{} = {} deg: the lifter base ({:.4g} m wide at the plate, from lifter_top_width_m = {} m, "
-                                 "lifter_height_m = {} m, face_angle_leading_deg = {} deg and face_angle_trailing_deg = {} "
-                                 "deg) does not fit in its segment ({:.4g} m) with at least one surface element ({} m) of "
-                                 "plate on each side; make the faces steeper (smaller angles), the lifter narrower or "
-                                 "lower, or use fewer segments",
-                                 name, lead ? d.face_angle_leading_deg : d.face_angle_trailing_deg, 2 * half_base * rp,
-                                 d.top_width_m, d.lifter_height_m, d.face_angle_leading_deg, d.face_angle_trailing_deg,
-                                 seg * rp, h));
+    const std::string w = low ? "low_lifter_top_width_m" : "lifter_top_width_m";
+    const std::string hk = low ? "low_lifter_height_m" : "lifter_height_m";
+    const std::string blamed = low ? w : lead ? "face_angle_leading_deg" : "face_angle_trailing_deg";
+    const std::string value = low ? fmt::format("{} m", d.top_width_m)
+                                  : fmt::format("{} deg", lead ? d.face_angle_leading_deg : d.face_angle_trailing_deg);
+    throw InputError("liner." + blamed,
+                     fmt::format("{} = {}: the {}lifter base does not fit in its segment: the foot of its {} face lies "
+                                 "{:.4g} m along the plate from its centre line (from {} = {} m, {} = {} m, "
+                                 "face_angle_leading_deg = {} deg, "
+                                 "face_angle_trailing_deg = {} deg); allowed at most {:.4g} m, half the segment "
+                                 "({:.4g} m) less one surface element ({} m) of plate; make the faces steeper (smaller "
+                                 "angles), the lifter narrower or lower, or use fewer segments",
+                                 blamed, value, low ? "low " : "", lead ? "leading" : "trailing", half_base * rp, w,
+                                 d.top_width_m, hk,
+                                 d.lifter_height_m, d.face_angle_leading_deg, d.face_angle_trailing_deg,
+                                 0.5 * seg * rp - h, 0.5 * seg * rp, h));
   }
   if (d.corner_radius_m < 0)
     throw InputError(key("corner_radius_m"), fmt::format("corner_radius_m = {} m: must be >= 0", d.corner_radius_m));

@@ -130,7 +130,16 @@ TEST_CASE("physically impossible mills are refused naming the key and the line",
     // (docs/reliability.md, known issue 5)
     const std::string t = edited("liner", "face_angle_trailing_deg", "50.0");
     refused(t, {"mill.toml:" + std::to_string(line_of(t, "face_angle_trailing_deg = 50.0")),
-                "face_angle_trailing_deg = 50 deg", "face_angle_leading_deg = 20 deg", "does not fit in its segment"});
+                "face_angle_trailing_deg = 50 deg", "face_angle_leading_deg = 20 deg", "does not fit in its segment",
+                "allowed at most 0.2406 m"});
+  }
+  {
+    // a hi-lo low lifter too wide: its own keys, not the high lifter's
+    const std::string t = edited_text(edited_text(edited("liner", "pattern", "\"hi-lo\""), "liner", "low_lifter_height_m", "0.15"),
+                                      "liner", "low_lifter_top_width_m", "0.45");
+    refused(t, {"mill.toml:" + std::to_string(line_of(t, "low_lifter_top_width_m = 0.45")),
+                "low_lifter_top_width_m = 0.45 m: the low lifter base does not fit in its segment",
+                "low_lifter_height_m = 0.15 m"});
   }
   refused(edited("mill", "speed_rpm", "13.5"), {"speed_rpm = 13.5", "of the critical speed", "centrifuges"});
   refused(edited("charge", "ball_filling", "0.3"), {"ball_filling = 0.3 is larger than filling = 0.24"});
