@@ -59,6 +59,10 @@ inline double fast_atan2(double y, double x) {
 }
 
 /// Pulp density [kg/m3] of a slurry with solids mass fraction w.
+/// Share of a held layer's lifter launches the relaxation may take (the
+/// two-flight-angle window, LayerSim::run()) from which a run says so.
+constexpr double kHeldWindowNoteShare = 0.05;
+
 double pulp_density(double w, double rho_solid, double rho_water) { return 1.0 / (w / rho_solid + (1.0 - w) / rho_water); }
 
 /// One concentric layer: a rigid ring of S slots of one media diameter.
@@ -1866,6 +1870,31 @@ ChargeResult LayerSim::run() {
     notes_.push_back(fmt::format("time_step_s = {} s is longer than the relaxation interval ({} outer cells, {:.4g} s): "
                                  "sub-stepped {} times ({:.4g} s)",
                                  dt_req, in_.model.relaxation_interval_cells, relax_dt_, substeps_, dt_));
+  // A known defect, said where it acts (docs/models/layer.md §9, "Why the fast
+  // pilots change regime"): a lifter that lets a held layer go later than the
+  // flight angle of the foot-stability rules (the smaller of the lifter's and
+  // the unheld angle) leaves a window in which a relaxation rolls the element
+  // down instead of its launch; the share of launches it takes is about
+  // min(1, window / interval), the window in time at the layer's speed.
+  {
+    double worst = 0, gap = 0;
+    int layer = -1;
+    for (int j = 0; j < std::min(n_open_, n_held_layers_); ++j) {
+      const double fa = flight_angle(j);
+      if (!L_[j].held || !(L_[j].omega > 0) || !std::isfinite(fa)) continue;
+      for (const HeldLaunch& h : held_[j]) {
+        if (!h.held || !h.released || !(h.release > fa)) continue;
+        const double share = std::min(1.0, (h.release - fa) / L_[j].omega / relax_dt_);
+        if (share > worst) worst = share, gap = h.release - fa, layer = j;
+      }
+    }
+    if (worst >= kHeldWindowNoteShare)
+      notes_.push_back(fmt::format("the lifters let layer {} go {:.2f} deg later than the foot-stability rules' flight "
+                                   "angle: up to about {:.0f} % of its lifter launches become rolls down the charge "
+                                   "surface (fewer direct impacts, the toe higher), a known defect of the layer model "
+                                   "(docs/models/layer.md §9, \"Why the fast pilots change regime\")",
+                                   layer, gap * 180.0 / kPi, 100.0 * worst));
+  }
   const double T_rev = kTwoPi / omega_;
   const double revs = in_.revolutions > 0 ? in_.revolutions : 2.0;
   t_avg0_ = in_.model.settle_revolutions * T_rev;
