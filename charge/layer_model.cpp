@@ -700,8 +700,10 @@ void LayerSim::setup_flight_angles() {
       }
     }
     // Unheld layers (and segments without a lifter at this layer): the layer
-    // leaves where its normal force vanishes, McIvor with beta = 0, mu = 0
-    // (Davis), but never beyond the flight point of the layer it rests on.
+    // leaves where an element on the radial "face" of the one behind it can
+    // no longer stay, McIvor's eq. 4.5 with beta = 0 and the friction
+    // coefficient mu (with mu = 0 it is Davis' angle, where the normal force
+    // vanishes), but never beyond the flight point of the layer it rests on.
     double th = l.omega > 0 ? davis(j) : kInf;
     th = std::min(th, prev_min);
     th = std::min(th, cl);
@@ -1956,6 +1958,8 @@ ChargeResult LayerSim::run() {
   for (int j = 0; j < n_open_; ++j) {
     const double share = static_cast<double>(L_[j].S) / L_[0].S;
     col_mass_[j + 1] = col_mass_[j] + m_ * share;
+    // the full m omega^2 r (the centripetal reaction), not thesis eq. 5.1's
+    // printed 1/2, for which no derivation was found (docs/models/layer.md §7)
     col_centrifugal_[j + 1] = col_centrifugal_[j] + m_ * share * L_[j].omega * L_[j].omega * L_[j].r;
   }
   if (in_.record_snapshot) {
