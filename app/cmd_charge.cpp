@@ -143,9 +143,7 @@ void write_charge_h5(const std::string& path, const Config& c, const LinerSurfac
 }
 
 int run_charge(const ChargeOptions& o) {
-  if (o.revolutions && !(std::isfinite(*o.revolutions) && *o.revolutions > 0 && *o.revolutions <= 1e4))
-    throw InputError("--revolutions",
-                     fmt::format("--revolutions {}: out of range; allowed 0 < value <= 1e4", *o.revolutions));
+  if (o.revolutions) checked_revolutions(*o.revolutions);
   Config c = load_config_or_default(o.config);
   if (!o.model.empty()) c.model.charge = o.model;
   if (!o.variant.empty()) c.model.variant = o.variant;

@@ -65,12 +65,7 @@ int run_wear_command(const WearOptions& o) {
       throw InputError("--amplification", fmt::format("--amplification {}: out of range; allowed 0 < value <= 1e9", a));
     c.wear.amplification_abrasion = c.wear.amplification_impact = a;
   }
-  if (o.revolutions) {
-    const double n = *o.revolutions;
-    if (!(std::isfinite(n) && n > 0 && n <= 1e4))
-      throw InputError("--revolutions", fmt::format("--revolutions {}: out of range; allowed 0 < value <= 1e4", n));
-    c.wear.revolutions = n;
-  }
+  if (o.revolutions) c.wear.revolutions = checked_revolutions(*o.revolutions);
   if (o.feedback) c.wear.feedback = true;
   validate_wear_spec(c.wear);
   // The liner is built for the configured rotation (its leading face faces

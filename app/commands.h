@@ -47,6 +47,9 @@ void note(const std::string& text);
 /// The same error, located, without throwing it.
 InputError located(const Config& c, const InputError& e);
 
+/// A --revolutions option's value: refused (InputError) unless 0 < n <= 1e4.
+double checked_revolutions(double n);
+
 /// The charge model's notes gathered over `drives` drives (a forecast's, a
 /// wear run's), one line each on stderr: "linerlife: note: in N of M charge
 /// drives (first in drive K): TEXT".

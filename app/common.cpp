@@ -20,6 +20,12 @@ void note(const std::string& text) { std::cerr << text << "\n"; }
 
 void rethrow_located(const Config& c, const InputError& e) { throw located(c, e); }
 
+double checked_revolutions(double n) {
+  if (!(std::isfinite(n) && n > 0 && n <= 1e4))
+    throw InputError("--revolutions", fmt::format("--revolutions {}: out of range; allowed 0 < value <= 1e4", n));
+  return n;
+}
+
 InputError located(const Config& c, const InputError& e) {
   const std::string msg = e.what();
   const std::string& key = e.key();

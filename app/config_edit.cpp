@@ -48,9 +48,7 @@ Config config_with(const Config& c, const std::string& section_key, const std::s
       while (p < msg.size() && std::isdigit(static_cast<unsigned char>(msg[p]))) ++p;
       if (msg.compare(p, 2, ": ") == 0) p += 2;
       else if (p < msg.size() && msg[p] == ' ') ++p;
-      Config lines = c;
-      lines.source = c.lines_source.empty() ? c.source : c.lines_source;
-      msg = (e.key() == section_key ? std::string() : config_location(lines, e.key())) + msg.substr(p);
+      msg = (e.key() == section_key ? std::string() : config_location(c, e.key())) + msg.substr(p);
     }
     throw InputError(what, fmt::format("{}: {}", origin, msg));
   }

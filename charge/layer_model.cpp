@@ -58,11 +58,11 @@ inline double fast_atan2(double y, double x) {
   return y < 0 ? -r : r;
 }
 
-/// Pulp density [kg/m3] of a slurry with solids mass fraction w.
 /// Share of a held layer's lifter launches the relaxation may take (the
 /// two-flight-angle window, LayerSim::run()) from which a run says so.
 constexpr double kHeldWindowNoteShare = 0.05;
 
+/// Pulp density [kg/m3] of a slurry with solids mass fraction w.
 double pulp_density(double w, double rho_solid, double rho_water) { return 1.0 / (w / rho_solid + (1.0 - w) / rho_water); }
 
 /// One concentric layer: a rigid ring of S slots of one media diameter.
