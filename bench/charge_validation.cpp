@@ -1,11 +1,16 @@
-// bench_charge_validation CSV [DEM_CASES]: the cross-model comparison of
+// bench_charge_validation CSV [DEM_CASES] [--unheld-mu MU] [--pocket-balls P] [--lifter-slide]:
+// the cross-model comparison of
 // docs/validation/charge.md. Runs the empirical model (Morrell's C-model) and
 // the layer model in versions 1.0, 1.1 and 1.2 on the Qiu mill and the 16
 // pilot tests of thesis Table 4.1 (each configuration as checked in, default
 // revolutions), and the DEM on the cases whose name contains one of the
 // comma-separated DEM_CASES (e.g. "qiu,pilot 05"; the DEM takes ~30 s for the
 // Qiu mill). Writes one CSV row per run; bench/charge_validation.py turns it
-// into the tables of thesis Tables 4.3/4.4.
+// into the tables of thesis Tables 4.3/4.4. The two options set the layer
+// model's study parameters ModelSpec::unheld_friction_coefficient and
+// held_pocket_balls, --lifter-slide its lifter_slide ("on"), for every mill
+// (docs/models/layer.md §3, "The release study";
+// bench/charge_release.py compares such runs with the DEM).
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -18,19 +23,31 @@
 using namespace linerlife;
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::fprintf(stderr, "usage: %s CSV [DEM_CASES]\n", argv[0]);
+  std::vector<std::string> pos;
+  double unheld_mu = -1, pocket_balls = -1;
+  bool slide = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--lifter-slide")
+      slide = true;
+    else if ((a == "--unheld-mu" || a == "--pocket-balls") && i + 1 < argc)
+      (a == "--unheld-mu" ? unheld_mu : pocket_balls) = std::stod(argv[++i]);
+    else
+      pos.push_back(a);
+  }
+  if (pos.empty() || pos.size() > 2) {
+    std::fprintf(stderr, "usage: %s CSV [DEM_CASES] [--unheld-mu MU] [--pocket-balls P] [--lifter-slide]\n", argv[0]);
     return 2;
   }
   std::vector<std::string> dem_cases;
-  if (argc > 2) {
-    std::stringstream ss(argv[2]);
+  if (pos.size() > 1) {
+    std::stringstream ss(pos[1]);
     for (std::string t; std::getline(ss, t, ',');)
       if (!t.empty()) dem_cases.push_back(t);
   }
-  std::FILE* csv = std::fopen(argv[1], "w");
+  std::FILE* csv = std::fopen(pos[0].c_str(), "w");
   if (!csv) {
-    std::fprintf(stderr, "cannot write %s\n", argv[1]);
+    std::fprintf(stderr, "cannot write %s\n", pos[0].c_str());
     return 2;
   }
   fmt::print(csv, "case,rotation,fraction_critical,filling,model,variant,toe_deg,shoulder_deg,com_deg,com_r_m,"
@@ -50,7 +67,10 @@ int main(int argc, char** argv) {
         break;
       }
     for (const Run& run : runs) {
-      const ChargeInput in = bench::make_input(c.config, s, run.model, run.variant, 0);
+      ChargeInput in = bench::make_input(c.config, s, run.model, run.variant, 0);
+      in.model.unheld_friction_coefficient = unheld_mu;
+      in.model.held_pocket_balls = pocket_balls;
+      if (slide) in.model.lifter_slide = true;
       const ChargeResult r = find_charge_model(run.model).make()->run(in);
       const Indicators& I = r.indicators;
       fmt::print(csv, "{},{},{:.5f},{},{},{},{:.4f},{:.4f},{:.4f},{:.5f},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.5f},{:.4f},{:.4f}\n",

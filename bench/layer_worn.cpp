@@ -9,6 +9,9 @@
 //     --only i,j,...    these profile indices only
 //     --blend i,j,n     n + 1 profiles blended from profile i to profile j
 //     --csv-dir DIR     also write each profile used as a profile CSV (docs/profile-csv.md)
+//     --unheld-mu MU    layer model study options (docs/models/layer.md §3, "The release
+//     --pocket-balls P  study"): ModelSpec::unheld_friction_coefficient, held_pocket_balls
+//     --lifter-slide B  [model] lifter_slide, on or off
 //
 // FORECAST.h5 is the results file of `linerlife forecast --out DIR`. Prints one
 // tab-separated row per profile: hours, lifter metrics, and the indicators.
@@ -39,7 +42,7 @@ static std::vector<int> parse_ints(const std::string& s) {
 int main(int argc, char** argv) {
   if (argc < 2) {
     std::fprintf(stderr, "usage: %s FORECAST.h5 [--model M] [--variant V] [--revs N] [--every K] [--only i,j] "
-                         "[--blend i,j,n] [--csv-dir DIR]\n", argv[0]);
+                         "[--blend i,j,n] [--csv-dir DIR] [--unheld-mu MU] [--pocket-balls P] [--lifter-slide on|off]\n", argv[0]);
     return 2;
   }
   const bench::WornHistory w = bench::read_worn_history(argv[1]);
@@ -57,6 +60,9 @@ int main(int argc, char** argv) {
     else if (k == "--only") only = parse_ints(v);
     else if (k == "--blend") blend = parse_ints(v);
     else if (k == "--csv-dir") csv_dir = v;
+    else if (k == "--unheld-mu") c.model.unheld_friction_coefficient = std::stod(v);
+    else if (k == "--pocket-balls") c.model.held_pocket_balls = std::stod(v);
+    else if (k == "--lifter-slide") c.model.lifter_slide = v == "on";
     else {
       std::fprintf(stderr, "unknown option %s\n", k.c_str());
       return 2;

@@ -45,6 +45,12 @@ struct ModelSpec {
   double hf_lift_angle_deg = 45.0;      // [deg] lift angle alpha of the Hogg-Fuerstenau power figure
   double element_size_diameters = 1.0;  // [-] studies only: layer model's element edge in media diameters
                                         //     (agglomerated elements, thesis §4.4.5; docs/models/layer.md §1)
+  double unheld_friction_coefficient = -1;  // [-] studies only: mu of McIvor's angle with beta = 0 for the
+                                           //     layers no lifter holds (< 0: friction_coefficient;
+                                           //     0: Davis' angle; docs/models/layer.md §3, "The release study")
+  double held_pocket_balls = -1;        // [-] studies only: < 0, every element of a lifter-held layer leaves at its
+                                        //     lifter's angle (the thesis); >= 0, only those within this many
+                                        //     element widths of the foot of the leading face, the rest as unheld
   double relaxation_interval_cells = 0.5;  // [-] layer model: support sweep and surface relaxation every this many
                                          //     outer cells of shell travel (docs/models/layer.md §9)
   double max_courant = 0;               // [-] studies only: shell travel per step / media diameter allowed

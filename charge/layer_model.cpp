@@ -187,6 +187,12 @@ class LayerSim {
   void launch(int j, int s, double tau, int seg, bool relaunch = false);
   /// Polar angle beyond which layer j cannot carry an element (its flight angle).
   double flight_angle(int j) const { return std::min(L_[j].release, L_[j].rel_min); }
+  /// The release study's pocket (ModelSpec::held_pocket_balls >= 0): the
+  /// segment of the lifter whose leading face pushes an element of layer j at
+  /// liner-frame angle psi in segment seg, if the element is within
+  /// held_pocket_balls element widths of the face's foot (along layer j's
+  /// arc); -1 if it rests on the plate further ahead.
+  int pocket_lifter(int j, int seg, double psi) const;
   void check_flights(double t1);
   /// The events of a step, in a heap ordered by time (then departures,
   /// landings, checks; then index: deterministic).
@@ -299,6 +305,8 @@ class LayerSim {
   double m_sphere_ = 0;        // [kg] one media sphere of the element's mean solid density
   double rho_solid_ = 0, rho_pulp_ = 0;
   double mu_ = 0, gamma_ = 0;  // friction coefficient, repose angle [rad]
+  double mu_unheld_ = 0;       // friction coefficient of the unheld layers' flight angle
+  double pocket_balls_ = -1;   // < 0: a held layer leaves at its lifter's angle everywhere; else see pocket_lifter()
   double r_i_ = 0, z_ = 0;     // Morrell's inner radius and z
   double toe_morrell_ = 0;     // [rad] eq. 4.15
   int variant_ = 12;           // 10, 11, 12
@@ -422,6 +430,13 @@ LayerSim::LayerSim(const ChargeInput& in) : in_(in) {
   if (ms.slurry_drag && c.discharge != Discharge::Overflow)
     throw InputError("model.slurry_drag", "slurry_drag = \"on\" needs an overflow mill ([mill] discharge = \"overflow\"): a grate mill has no slurry pool");
   parse_slip_law(ms.slip_model);  // refuses unknown names
+  if (!(ms.unheld_friction_coefficient <= 2))
+    throw InputError("model.unheld_friction_coefficient",
+                     fmt::format("unheld_friction_coefficient = {}: allowed value <= 2 (< 0: friction_coefficient)",
+                                 ms.unheld_friction_coefficient));
+  if (!(ms.held_pocket_balls <= 100))
+    throw InputError("model.held_pocket_balls",
+                     fmt::format("held_pocket_balls = {}: allowed value <= 100 (< 0: the whole layer)", ms.held_pocket_balls));
   if (!(ms.element_size_diameters >= 1 && ms.element_size_diameters <= 4))
     throw InputError("model.element_size_diameters",
                      fmt::format("element_size_diameters = {}: allowed 1 <= value <= 4", ms.element_size_diameters));
@@ -434,6 +449,8 @@ LayerSim::LayerSim(const ChargeInput& in) : in_(in) {
   J_ = c.filling;
   omega_ = in.mill.omega_rad_s();
   mu_ = ms.friction_coefficient;
+  mu_unheld_ = ms.unheld_friction_coefficient < 0 ? mu_ : ms.unheld_friction_coefficient;
+  pocket_balls_ = ms.held_pocket_balls;
   gamma_ = ms.repose_angle_deg * kPi / 180.0;
   drag_on_ = ms.slurry_drag;
 }
@@ -628,8 +645,9 @@ void LayerSim::setup_flight_angles() {
   // the layer at r_i (thesis §4.6.1, Fig. 4-25) bounds the flight angles.
   // Unheld layers: McIvor with beta = 0 (thesis eq. 4.5 applied to every
   // layer, §4.4.6): an element rests on the one behind it in its layer, a
-  // radial "face", with the friction coefficient mu.
-  auto davis = [&](int j) { return mcivor_flight_angle(L_[j].omega * L_[j].omega * L_[j].r / kGravity, 0.0, mu_); };
+  // radial "face", with the friction coefficient mu (the release study's
+  // ModelSpec::unheld_friction_coefficient where it is set).
+  auto davis = [&](int j) { return mcivor_flight_angle(L_[j].omega * L_[j].omega * L_[j].r / kGravity, 0.0, mu_unheld_); };
   double clip_bx = 0, clip_by = 0;
   bool clip = false;
   if (variant_ == 11) {
@@ -832,6 +850,24 @@ void LayerSim::launch(int j, int s, double tau, int seg, bool relaunch) {
   if (in_step_ && !relaunch) schedule_flight(static_cast<int>(flights_.size()) - 1);
 }
 
+int LayerSim::pocket_lifter(int j, int seg, double psi) const {
+  // canonical (anticlockwise) frame: a lifter pushes what lies ahead of its
+  // crest, at larger angles; behind the crest is the previous lifter's pocket
+  const int S = static_cast<int>(seg_.size());
+  int k = seg;
+  double off = std::remainder(psi - seg_[k].crest_angle_rad, kTwoPi);
+  if (off < 0) {
+    k = (k + S - 1) % S;
+    off = wrap2pi(psi - seg_[k].crest_angle_rad);
+  }
+  const SegmentMetrics& sm = seg_[k];
+  if (!sm.has_lifter || !std::isfinite(sm.face_angle_leading_deg)) return -1;
+  // the foot of the leading face: half the top plus the face's run over its height
+  const double top = std::isfinite(sm.top_width_m) ? 0.5 * sm.top_width_m : 0.0;
+  const double foot = top + sm.lifter_height_m * std::tan(sm.face_angle_leading_deg * kPi / 180.0);
+  return off * L_[j].r < foot + pocket_balls_ * d_ ? k : -1;
+}
+
 void LayerSim::departures(double t0, double t1) {
   dep_events_.clear();
   const double dt = t1 - t0;
@@ -852,8 +888,12 @@ void LayerSim::departures(double t0, double t1) {
         if (occ(j, si) < 0) continue;
         const double a0 = slot_angle(j, si, t0);
         const double psi = a0 + wdt - mill_angle(t1);
-        const int seg = canon_.surface.segment_of_angle(psi);
-        const HeldLaunch& h = held_[j][seg];
+        int seg = canon_.surface.segment_of_angle(psi);
+        // the release study (docs/models/layer.md §3, "The release study"): only the elements in
+        // a lifter's pocket leave at its angle, the rest of the layer as unheld
+        if (pocket_balls_ >= 0) seg = pocket_lifter(j, seg, psi);
+        static const HeldLaunch kUnheld{};
+        const HeldLaunch& h = seg >= 0 ? held_[j][seg] : kUnheld;
         const double rel = h.held ? (h.released ? h.release : kInf) : l.release;
         if (!std::isfinite(rel)) continue;
         const double w = std::remainder(rel - a0, kTwoPi);

@@ -426,6 +426,8 @@ TEST_CASE("the layer model refuses input it cannot take", "[charge][layer][input
   refused([](ChargeInput& in) { in.revolutions = -1; }, "--revolutions");
   refused([](ChargeInput& in) { in.model.relaxation_interval_cells = 0; }, "model.relaxation_interval_cells");
   refused([](ChargeInput& in) { in.model.element_size_diameters = 0.5; }, "model.element_size_diameters");
+  refused([](ChargeInput& in) { in.model.unheld_friction_coefficient = 2.5; }, "model.unheld_friction_coefficient");
+  refused([](ChargeInput& in) { in.model.held_pocket_balls = 101; }, "model.held_pocket_balls");
   refused([](ChargeInput& in) { in.model.element_size_diameters = 4.5; }, "model.element_size_diameters");
   {  // pilot test 5 (50 mm media in a 0.75 m mill): elements of 2 media diameters leave three layers
     const Config c5 = mill_config("pilot_test_05.toml");
@@ -515,4 +517,49 @@ TEST_CASE("staggered initial phases change the start, not the settled charge", "
   CHECK(b.stats.charge_mass_kg_per_m == Approx(a.stats.charge_mass_kg_per_m).epsilon(1e-12));
   in.model.initial_phases = "random";
   CHECK_THROWS_AS(run_model("layer", in), InputError);
+}
+
+// The release study's options (docs/models/layer.md §3, "The release study").
+TEST_CASE("release study: the thesis by default, Davis' angle for unheld layers at mu 0, pockets from the lifter face",
+          "[charge][layer]") {
+  SECTION("the options at their thesis values are the default run, bit for bit") {
+    const Config c = mill_config("qiu2001_sag.toml");
+    const LinerSurface s = build_liner_surface(c.mill, c.liner);
+    const ChargeInput in = charge_input(c, s, 1, 0.5);
+    const ChargeResult ref = run_model("layer", in);
+    ChargeInput same_mu = in;
+    same_mu.model.unheld_friction_coefficient = in.model.friction_coefficient;
+    check_same_run(ref, run_model("layer", same_mu));
+    // a pocket wider than the plate between two lifters holds the whole
+    // layer, as the thesis does; not bit for bit, since an element behind a
+    // crest is now launched by the lifter behind it, whose segment's metrics
+    // differ from its own in the last digits
+    ChargeInput wide = in;
+    wide.model.held_pocket_balls = 100;
+    const ChargeResult w = run_model("layer", wide);
+    CHECK(w.indicators.net_power_kw == Approx(ref.indicators.net_power_kw).epsilon(0.005));
+    CHECK(angle_diff(w.indicators.toe_deg, ref.indicators.toe_deg) < 1.0);
+    CHECK(angle_diff(w.indicators.shoulder_deg, ref.indicators.shoulder_deg) < 1.0);
+    // the Qiu mill's lifter lets layer 0 go at 43.5 deg, before the unheld
+    // angle (56.5 deg): with only the ball at the face held, the rest of the
+    // outer layer rides on, and the run changes
+    ChargeInput pocket = in;
+    pocket.model.held_pocket_balls = 0;
+    const ChargeResult p = run_model("layer", pocket);
+    CHECK(std::abs(p.indicators.net_power_kw / ref.indicators.net_power_kw - 1.0) > 0.01);
+  }
+  SECTION("Davis' angle (mu 0) lets the unheld layers go earlier: a lower shoulder") {
+    const Config c = mill_config("pilot_test_10.toml");
+    const LinerSurface s = build_liner_surface(c.mill, c.liner);
+    ChargeInput in = charge_input(c, s, 2, 1);
+    in.model.variant = "1.0";  // no r_i confinement: the flight angles alone
+    const ChargeResult ref = run_model("layer", in);
+    in.model.unheld_friction_coefficient = 0;
+    const ChargeResult davis = run_model("layer", in);
+    // along the rotation (pilot 10 turns clockwise: angles fall along it)
+    const double sense = c.mill.rotation == Rotation::Ccw ? 1.0 : -1.0;
+    const double drop = sense * (ref.indicators.shoulder_deg - davis.indicators.shoulder_deg);
+    INFO("shoulder " << ref.indicators.shoulder_deg << " -> " << davis.indicators.shoulder_deg << " deg");
+    CHECK(drop > 5.0);
+  }
 }
