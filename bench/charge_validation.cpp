@@ -1,4 +1,4 @@
-// bench_charge_validation CSV [DEM_CASES] [--unheld-mu MU] [--pocket-balls P] [--lifter-slide]:
+// bench_charge_validation CSV [DEM_CASES] [--unheld-mu MU] [--pocket-balls P] [--lifter-slide on|off]:
 // the cross-model comparison of
 // docs/validation/charge.md. Runs the empirical model (Morrell's C-model) and
 // the layer model in versions 1.0, 1.1 and 1.2 on the Qiu mill and the 16
@@ -8,7 +8,7 @@
 // Qiu mill). Writes one CSV row per run; bench/charge_validation.py turns it
 // into the tables of thesis Tables 4.3/4.4. The two options set the layer
 // model's study parameters ModelSpec::unheld_friction_coefficient and
-// held_pocket_balls, --lifter-slide its lifter_slide ("on"), for every mill
+// held_pocket_balls, --lifter-slide its lifter_slide, for every mill
 // (docs/models/layer.md §3, "The release study";
 // bench/charge_release.py compares such runs with the DEM).
 #include <cstdio>
@@ -19,24 +19,36 @@
 #include <fmt/format.h>
 
 #include "bench/charge_cases.h"
+#include "geometry/errors.h"
 
 using namespace linerlife;
 
 int main(int argc, char** argv) {
   std::vector<std::string> pos;
   double unheld_mu = -1, pocket_balls = -1;
-  bool slide = false;
-  for (int i = 1; i < argc; ++i) {
+  int slide = -1;  // -1: each mill's own setting
+  bool bad = false;
+  for (int i = 1; i < argc && !bad; ++i) {
     const std::string a = argv[i];
-    if (a == "--lifter-slide")
-      slide = true;
-    else if ((a == "--unheld-mu" || a == "--pocket-balls") && i + 1 < argc)
-      (a == "--unheld-mu" ? unheld_mu : pocket_balls) = std::stod(argv[++i]);
-    else
+    if (a.rfind("--", 0) != 0) {
       pos.push_back(a);
+      continue;
+    }
+    if (i + 1 >= argc) {
+      bad = true;
+      break;
+    }
+    const std::string v = argv[++i];
+    if (a == "--lifter-slide" && (v == "on" || v == "off"))
+      slide = v == "on";
+    else if (a == "--unheld-mu" || a == "--pocket-balls")
+      (a == "--unheld-mu" ? unheld_mu : pocket_balls) = std::stod(v);
+    else
+      bad = true;
   }
-  if (pos.empty() || pos.size() > 2) {
-    std::fprintf(stderr, "usage: %s CSV [DEM_CASES] [--unheld-mu MU] [--pocket-balls P] [--lifter-slide]\n", argv[0]);
+  if (bad || pos.empty() || pos.size() > 2) {
+    std::fprintf(stderr, "usage: %s CSV [DEM_CASES] [--unheld-mu MU] [--pocket-balls P] [--lifter-slide on|off]\n",
+                 argv[0]);
     return 2;
   }
   std::vector<std::string> dem_cases;
@@ -70,8 +82,15 @@ int main(int argc, char** argv) {
       ChargeInput in = bench::make_input(c.config, s, run.model, run.variant, 0);
       in.model.unheld_friction_coefficient = unheld_mu;
       in.model.held_pocket_balls = pocket_balls;
-      if (slide) in.model.lifter_slide = true;
-      const ChargeResult r = find_charge_model(run.model).make()->run(in);
+      if (slide >= 0) in.model.lifter_slide = slide == 1;
+      ChargeResult r;
+      try {
+        r = find_charge_model(run.model).make()->run(in);
+      } catch (const InputError& e) {
+        std::fprintf(stderr, "%s %s %s: %s\n", c.name.c_str(), run.model.c_str(), run.variant.c_str(), e.what());
+        std::fclose(csv);
+        return 2;
+      }
       const Indicators& I = r.indicators;
       fmt::print(csv, "{},{},{:.5f},{},{},{},{:.4f},{:.4f},{:.4f},{:.5f},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.5f},{:.4f},{:.4f}\n",
                  c.name, c.config.mill.rotation == Rotation::Ccw ? "ccw" : "cw", I.fraction_critical,

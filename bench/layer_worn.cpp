@@ -62,9 +62,9 @@ int main(int argc, char** argv) {
     else if (k == "--csv-dir") csv_dir = v;
     else if (k == "--unheld-mu") c.model.unheld_friction_coefficient = std::stod(v);
     else if (k == "--pocket-balls") c.model.held_pocket_balls = std::stod(v);
-    else if (k == "--lifter-slide") c.model.lifter_slide = v == "on";
+    else if (k == "--lifter-slide" && (v == "on" || v == "off")) c.model.lifter_slide = v == "on";
     else {
-      std::fprintf(stderr, "unknown option %s\n", k.c_str());
+      std::fprintf(stderr, "unknown option or value: %s %s\n", k.c_str(), v.c_str());
       return 2;
     }
   }

@@ -51,6 +51,7 @@ struct ModelSpec {
   double held_pocket_balls = -1;        // [-] studies only: < 0, every element of a lifter-held layer leaves at its
                                         //     lifter's angle (the thesis); >= 0, only those within this many
                                         //     element widths of the foot of the leading face, the rest as unheld
+                                        //     (docs/models/layer.md §3, "The release study")
   double relaxation_interval_cells = 0.5;  // [-] layer model: support sweep and surface relaxation every this many
                                          //     outer cells of shell travel (docs/models/layer.md §9)
   double max_courant = 0;               // [-] studies only: shell travel per step / media diameter allowed

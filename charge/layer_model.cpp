@@ -852,19 +852,23 @@ void LayerSim::launch(int j, int s, double tau, int seg, bool relaunch) {
 
 int LayerSim::pocket_lifter(int j, int seg, double psi) const {
   // canonical (anticlockwise) frame: a lifter pushes what lies ahead of its
-  // crest, at larger angles; behind the crest is the previous lifter's pocket
+  // crest, at larger angles; behind the crest, or on a segment without a
+  // lifter, the element is ahead of the nearest lifter behind it
   const int S = static_cast<int>(seg_.size());
+  auto lifter = [&](int k) { return seg_[k].has_lifter && std::isfinite(seg_[k].face_angle_leading_deg); };
   int k = seg;
-  double off = std::remainder(psi - seg_[k].crest_angle_rad, kTwoPi);
-  if (off < 0) {
-    k = (k + S - 1) % S;
-    off = wrap2pi(psi - seg_[k].crest_angle_rad);
+  if (!lifter(k) || std::remainder(psi - seg_[k].crest_angle_rad, kTwoPi) < 0) {
+    int n = 1;
+    for (k = (seg + S - 1) % S; n < S && !lifter(k); ++n) k = (k + S - 1) % S;
+    if (!lifter(k)) return -1;  // no lifter on the ring
   }
   const SegmentMetrics& sm = seg_[k];
-  if (!sm.has_lifter || !std::isfinite(sm.face_angle_leading_deg)) return -1;
-  // the foot of the leading face: half the top plus the face's run over its height
+  const double off = wrap2pi(psi - sm.crest_angle_rad);
+  // the foot of the leading face: half the top plus the face's run over its
+  // height (taking the crest at the middle of the top; an undercut face's
+  // foot is under the top, counted from the crest)
   const double top = std::isfinite(sm.top_width_m) ? 0.5 * sm.top_width_m : 0.0;
-  const double foot = top + sm.lifter_height_m * std::tan(sm.face_angle_leading_deg * kPi / 180.0);
+  const double foot = std::max(0.0, top + sm.lifter_height_m * std::tan(sm.face_angle_leading_deg * kPi / 180.0));
   return off * L_[j].r < foot + pocket_balls_ * d_ ? k : -1;
 }
 
