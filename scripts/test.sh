@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Quick start 2: set up (install what is missing, build), then run the whole
-# default test suite. Tests tagged [slow] are excluded here; they run with the
-# benchmarks (bench/README.md).
+# default test suite. Tests tagged [slow] are excluded here; run them with
+# `ctest --test-dir build -L slow` (README.md, "Layout").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
