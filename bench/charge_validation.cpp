@@ -1,4 +1,5 @@
-// bench_charge_validation CSV [DEM_CASES] [--unheld-mu MU] [--pocket-balls P] [--lifter-slide on|off]:
+// bench_charge_validation CSV [DEM_CASES] [--unheld-mu MU] [--pocket-balls P] [--lifter-slide on|off]
+//                         [--beta-iterate N]:
 // the cross-model comparison of
 // docs/validation/charge.md. Runs the empirical model (Morrell's C-model) and
 // the layer model in versions 1.0, 1.1 and 1.2 on the Qiu mill and the 16
@@ -8,7 +9,10 @@
 // Qiu mill). Writes one CSV row per run; bench/charge_validation.py turns it
 // into the tables of thesis Tables 4.3/4.4. The two options set the layer
 // model's study parameters ModelSpec::unheld_friction_coefficient and
-// held_pocket_balls, --lifter-slide its lifter_slide, for every mill
+// held_pocket_balls, --lifter-slide its lifter_slide, for every mill;
+// --beta-iterate N runs each layer case N more times, each with
+// ModelSpec::inner_radius_beta = 1 - the previous run's airborne fraction, and
+// writes the last (docs/models/layer-worn.md, "The en-masse share of eq. 4.14")
 // (docs/models/layer.md §3, "The release study";
 // bench/charge_release.py compares such runs with the DEM).
 #include <cstdio>
@@ -27,6 +31,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> pos;
   double unheld_mu = -1, pocket_balls = -1;
   int slide = -1;  // -1: each mill's own setting
+  int beta_passes = 0;
   bool bad = false;
   for (int i = 1; i < argc && !bad; ++i) {
     const std::string a = argv[i];
@@ -41,13 +46,16 @@ int main(int argc, char** argv) {
     const std::string v = argv[++i];
     if (a == "--lifter-slide" && (v == "on" || v == "off"))
       slide = v == "on";
+    else if (a == "--beta-iterate")
+      beta_passes = std::stoi(v);
     else if (a == "--unheld-mu" || a == "--pocket-balls")
       (a == "--unheld-mu" ? unheld_mu : pocket_balls) = std::stod(v);
     else
       bad = true;
   }
   if (bad || pos.empty() || pos.size() > 2) {
-    std::fprintf(stderr, "usage: %s CSV [DEM_CASES] [--unheld-mu MU] [--pocket-balls P] [--lifter-slide on|off]\n",
+    std::fprintf(stderr, "usage: %s CSV [DEM_CASES] [--unheld-mu MU] [--pocket-balls P] [--lifter-slide on|off] "
+                 "[--beta-iterate N]\n",
                  argv[0]);
     return 2;
   }
@@ -86,6 +94,10 @@ int main(int argc, char** argv) {
       ChargeResult r;
       try {
         r = find_charge_model(run.model).make()->run(in);
+        for (int pass = 0; pass < beta_passes && run.model == "layer"; ++pass) {
+          in.model.inner_radius_beta = 1.0 - r.stats.airborne_fraction;
+          r = find_charge_model(run.model).make()->run(in);
+        }
       } catch (const InputError& e) {
         std::fprintf(stderr, "%s %s %s: %s\n", c.name.c_str(), run.model.c_str(), run.variant.c_str(), e.what());
         std::fclose(csv);

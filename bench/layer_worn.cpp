@@ -12,6 +12,10 @@
 //     --unheld-mu MU    layer model study options (docs/models/layer.md §3, "The release
 //     --pocket-balls P  study"): ModelSpec::unheld_friction_coefficient, held_pocket_balls
 //     --lifter-slide B  [model] lifter_slide, on or off
+//     --beta B          version 1.2's en-masse share in eq. 4.14 (ModelSpec::inner_radius_beta)
+//     --beta-iterate N  N more runs of each profile, each with beta = 1 - the previous run's
+//                       airborne fraction (docs/models/layer-worn.md, "The en-masse share of
+//                       eq. 4.14"); one row per run
 //
 // FORECAST.h5 is the results file of `linerlife forecast --out DIR`. Prints one
 // tab-separated row per profile: hours, lifter metrics, and the indicators.
@@ -42,14 +46,15 @@ static std::vector<int> parse_ints(const std::string& s) {
 int main(int argc, char** argv) {
   if (argc < 2) {
     std::fprintf(stderr, "usage: %s FORECAST.h5 [--model M] [--variant V] [--revs N] [--every K] [--only i,j] "
-                         "[--blend i,j,n] [--csv-dir DIR] [--unheld-mu MU] [--pocket-balls P] [--lifter-slide on|off]\n", argv[0]);
+                         "[--blend i,j,n] [--csv-dir DIR] [--unheld-mu MU] [--pocket-balls P] [--lifter-slide on|off] "
+                         "[--beta B] [--beta-iterate N]\n", argv[0]);
     return 2;
   }
   const bench::WornHistory w = bench::read_worn_history(argv[1]);
   Config c = w.config;
   std::string model = c.model.charge, csv_dir;
   double revs = c.forecast.revolutions_per_drive;
-  int every = 1;
+  int every = 1, beta_passes = 0;
   std::vector<int> only, blend;
   for (int i = 2; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
@@ -63,6 +68,8 @@ int main(int argc, char** argv) {
     else if (k == "--unheld-mu") c.model.unheld_friction_coefficient = std::stod(v);
     else if (k == "--pocket-balls") c.model.held_pocket_balls = std::stod(v);
     else if (k == "--lifter-slide" && (v == "on" || v == "off")) c.model.lifter_slide = v == "on";
+    else if (k == "--beta") c.model.inner_radius_beta = std::stod(v);
+    else if (k == "--beta-iterate") beta_passes = std::stoi(v);
     else {
       std::fprintf(stderr, "unknown option or value: %s %s\n", k.c_str(), v.c_str());
       return 2;
@@ -90,7 +97,7 @@ int main(int argc, char** argv) {
   }
   fmt::print("# {} variant {} revs {} on {} ({} profiles)\n", model, c.model.variant, revs, argv[1], jobs.size());
   fmt::print("hours\tlifter_m\tlead_deg\tD_eff_m\tr_i_m\ttoe\tshoulder\tcom_deg\tcom_r\tlayers\ttraj\tnet_kW\talt_kW\t"
-             "open\twall_s\n");
+             "open\twall_s\tbeta\tairborne\n");
   for (const Job& j : jobs) {
     const LinerSurface s = bench::ring_of(R, S, j.profile);
     const SegmentMetrics m = segment_metrics(s, 0, c.mill.rotation, 7800.0);
@@ -112,18 +119,24 @@ int main(int argc, char** argv) {
     in.surface = &s;
     in.revolutions = revs;
     in.seed = 1;
-    const auto t0 = std::chrono::steady_clock::now();
-    try {
-      const ChargeResult r = find_charge_model(model).make()->run(in);
-      const Indicators& I = r.indicators;
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      fmt::print("{}\t{:.4f}\t{:.2f}\t{:.4f}\t{:.3f}\t{:.1f}\t{:.1f}\t{:.1f}\t{:.3f}\t{}\t{}\t{:.0f}\t{:.0f}\t{}\t{:.2f}\n",
-                 j.label, m.lifter_height_m, m.face_angle_leading_deg, I.diameter_eff_m, I.inner_radius_m, I.toe_deg,
-                 I.shoulder_deg, I.com_angle_deg, I.com_radius_m, I.n_layers, I.n_trajectories, I.net_power_kw,
-                 I.alt_net_power_kw, I.layer_speed_rpm.size(), wall);
-      for (const auto& n : r.notes) fmt::print(stderr, "{}: note: {}\n", j.label, n);
-    } catch (const std::exception& e) {
-      fmt::print("{}\t{:.4f}\t{:.2f}\tFAILED: {}\n", j.label, m.lifter_height_m, m.face_angle_leading_deg, e.what());
+    for (int pass = 0; pass <= beta_passes; ++pass) {
+      const auto t0 = std::chrono::steady_clock::now();
+      try {
+        const ChargeResult r = find_charge_model(model).make()->run(in);
+        const Indicators& I = r.indicators;
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        fmt::print("{}\t{:.4f}\t{:.2f}\t{:.4f}\t{:.3f}\t{:.1f}\t{:.1f}\t{:.1f}\t{:.3f}\t{}\t{}\t{:.0f}\t{:.0f}\t{}\t{:.2f}"
+                   "\t{:.4f}\t{:.4f}\n",
+                   j.label, m.lifter_height_m, m.face_angle_leading_deg, I.diameter_eff_m, I.inner_radius_m, I.toe_deg,
+                   I.shoulder_deg, I.com_angle_deg, I.com_radius_m, I.n_layers, I.n_trajectories, I.net_power_kw,
+                   I.alt_net_power_kw, I.layer_speed_rpm.size(), wall, r.stats.inner_radius_beta,
+                   r.stats.airborne_fraction);
+        for (const auto& n : r.notes) fmt::print(stderr, "{}: note: {}\n", j.label, n);
+        in.model.inner_radius_beta = 1.0 - r.stats.airborne_fraction;
+      } catch (const std::exception& e) {
+        fmt::print("{}\t{:.4f}\t{:.2f}\tFAILED: {}\n", j.label, m.lifter_height_m, m.face_angle_leading_deg, e.what());
+        break;
+      }
     }
     std::fflush(stdout);
   }

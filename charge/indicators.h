@@ -57,6 +57,9 @@ struct RunStats {
   long long flights = 0;    // flights launched during the run
   double charge_mass_kg_per_m = 0;  // [kg/m] mass of all elements (conserved), per metre of length
   double relaxation_interval_s = 0;  // [s] layer model: time between two surface relaxations (0: other models)
+  double airborne_fraction = 0;      // [-] layer model: time-averaged share of the elements in flight over the
+                                     //     averaged revolutions (Morrell's 1 - beta, eq. 4.14; 0: other models)
+  double inner_radius_beta = 0;      // [-] layer model: the en-masse share beta its eq. 4.14 used (version 1.2)
   // Particle models (dem) only; 0 otherwise. For `linerlife charge --json`.
   double particle_steps_per_s = 0;  // [1/s] particles x steps per second of wall time while stepping
   double contacts_per_s = 0;        // [1/s] contact evaluations per second of wall time while stepping

@@ -305,6 +305,8 @@ class LayerSim {
   double m_sphere_ = 0;        // [kg] one media sphere of the element's mean solid density
   double rho_solid_ = 0, rho_pulp_ = 0;
   double mu_ = 0, gamma_ = 0;  // friction coefficient, repose angle [rad]
+  double beta_ = 0;            // en-masse share in eq. 4.14 (Morrell's, or the study's)
+  double airborne_w_ = 0, airborne_t_ = 0;  // time integral of the flights in progress, and of the time, while averaging
   double mu_unheld_ = 0;       // friction coefficient of the unheld layers' flight angle
   double pocket_balls_ = -1;   // < 0: a held layer leaves at its lifter's angle everywhere; else see pocket_lifter()
   double r_i_ = 0, z_ = 0;     // Morrell's inner radius and z
@@ -434,6 +436,9 @@ LayerSim::LayerSim(const ChargeInput& in) : in_(in) {
     throw InputError("model.unheld_friction_coefficient",
                      fmt::format("unheld_friction_coefficient = {}: allowed value <= 2 (< 0: friction_coefficient)",
                                  ms.unheld_friction_coefficient));
+  if (!(ms.inner_radius_beta < 0 || (ms.inner_radius_beta > 0 && ms.inner_radius_beta <= 1)))
+    throw InputError("model.inner_radius_beta",
+                     fmt::format("inner_radius_beta = {}: allowed 0 < value <= 1 (< 0: Morrell's)", ms.inner_radius_beta));
   if (!(ms.held_pocket_balls <= 100))
     throw InputError("model.held_pocket_balls",
                      fmt::format("held_pocket_balls = {}: allowed value <= 100 (< 0: the whole layer)", ms.held_pocket_balls));
@@ -561,7 +566,15 @@ void LayerSim::setup_layers() {
     if (n == 0 && std::isfinite(L_[0].release)) sum = L_[0].release, n = 1;
     if (centrifuged || n == 0) break;
     shoulder = sum / n;
-    const double ri = morrell_inner_radius(R_eff_, Nm, J_, toe_morrell_, shoulder).inner_radius_m;
+    const MorrellInnerRadius mi = morrell_inner_radius(R_eff_, Nm, J_, toe_morrell_, shoulder);
+    double ri = mi.inner_radius_m;
+    beta_ = mi.beta;
+    if (in_.model.inner_radius_beta > 0) {
+      // a given en-masse share in eq. 4.14 (the study of
+      // docs/models/layer-worn.md, "The en-masse share of eq. 4.14")
+      beta_ = in_.model.inner_radius_beta;
+      ri = R_eff_ * std::sqrt(std::max(0.0, 1.0 - 2.0 * kPi * beta_ * J_ / (2.0 * kPi + shoulder - toe_morrell_)));
+    }
     const bool done = std::abs(ri - r_i_) < 1e-4 * R_eff_;
     r_i_ = ri;
     if (done) break;
@@ -1804,6 +1817,8 @@ void LayerSim::sample(double tau, double w) {
     occupancy_->add_to_bin(j, occupancy_->angular_bin(j, wrap2pi(fast_atan2(q.y(), q.x()))), cell_w, mass_w);
   }
   occupancy_->add_time(w);
+  airborne_w_ += static_cast<double>(flights_.size()) * w;
+  airborne_t_ += w;
   // --- liner loads from the outer layer (thesis eqs. 4.10/4.11, 5.1/5.2),
   // with the column heights of update_columns(tau)
   const Layer& l0 = L_[0];
@@ -2171,6 +2186,8 @@ ChargeResult LayerSim::run() {
   st.flights = n_flights_;
   st.charge_mass_kg_per_m = N_ * m_;
   st.relaxation_interval_s = relax_dt_;
+  st.airborne_fraction = airborne_t_ > 0 && N_ > 0 ? airborne_w_ / airborne_t_ / N_ : 0.0;
+  st.inner_radius_beta = beta_;
   return res;
 }
 

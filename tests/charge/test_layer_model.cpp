@@ -434,6 +434,8 @@ TEST_CASE("the layer model refuses input it cannot take", "[charge][layer][input
   refused([](ChargeInput& in) { in.model.unheld_friction_coefficient = 2.5; }, "model.unheld_friction_coefficient");
   refused([](ChargeInput& in) { in.model.unheld_friction_coefficient = std::nan(""); }, "model.unheld_friction_coefficient");
   refused([](ChargeInput& in) { in.model.held_pocket_balls = 101; }, "model.held_pocket_balls");
+  refused([](ChargeInput& in) { in.model.inner_radius_beta = 0; }, "model.inner_radius_beta");
+  refused([](ChargeInput& in) { in.model.inner_radius_beta = 1.5; }, "model.inner_radius_beta");
   refused([](ChargeInput& in) { in.model.held_pocket_balls = std::nan(""); }, "model.held_pocket_balls");
   refused([](ChargeInput& in) { in.model.element_size_diameters = 4.5; }, "model.element_size_diameters");
   {  // pilot test 5 (50 mm media in a 0.75 m mill): elements of 2 media diameters leave three layers
@@ -569,4 +571,28 @@ TEST_CASE("release study: the thesis by default, Davis' angle for unheld layers 
     INFO("shoulder " << ref.indicators.shoulder_deg << " -> " << davis.indicators.shoulder_deg << " deg");
     CHECK(drop > 5.0);
   }
+}
+
+// The en-masse share of eq. 4.14 (docs/models/layer-worn.md, "The en-masse share of eq. 4.14").
+TEST_CASE("version 1.2 with its own airborne share in eq. 4.14 puts the toe near Morrell's", "[charge][layer]") {
+  const Config c = mill_config("qiu2001_sag.toml");
+  const LinerSurface s = build_liner_surface(c.mill, c.liner);
+  ChargeInput in = charge_input(c, s, 2, 1);
+  const ChargeResult a = run_model("layer", in);
+  // Morrell's beta (eq. 4.14 from his flight time): about 18 % of the charge
+  // in flight; the layer model flies about 9 % of its elements on this mill
+  CHECK(a.stats.inner_radius_beta == Approx(0.82).margin(0.01));
+  CHECK(a.stats.airborne_fraction > 0.05);
+  CHECK(a.stats.airborne_fraction < 0.13);
+  // with its own share the band outside r_i is thicker (smaller r_i), so
+  // shorter for the same en-masse mass: the toe moves from about 215 deg
+  // towards Morrell's (eq. 4.15, 240.4 deg) and the DEM's (233.8 deg,
+  // docs/validation/charge.md)
+  in.model.inner_radius_beta = 1.0 - a.stats.airborne_fraction;
+  const ChargeResult b = run_model("layer", in);
+  CHECK(b.stats.inner_radius_beta == Approx(1.0 - a.stats.airborne_fraction).epsilon(1e-12));
+  CHECK(b.indicators.inner_radius_m < a.indicators.inner_radius_m - 0.1);
+  const double toe_morrell = run_model("empirical", in).indicators.toe_deg;
+  INFO("toe " << a.indicators.toe_deg << " -> " << b.indicators.toe_deg << " deg");
+  CHECK(std::abs(b.indicators.toe_deg - toe_morrell) < std::abs(a.indicators.toe_deg - toe_morrell) - 10.0);
 }
