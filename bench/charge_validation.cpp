@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
   }
   fmt::print(csv, "case,rotation,fraction_critical,filling,model,variant,toe_deg,shoulder_deg,com_deg,com_r_m,"
                   "net_power_kw,alt_net_power_kw,no_load_kw,charge_area_m2,n_layers,n_trajectories,inner_radius_m,"
-                  "simulated_s,wall_s\n");
+                  "simulated_s,wall_s,airborne_fraction,inner_radius_beta\n");
   std::vector<bench::Case> cases{bench::industrial_cases().front()};
   for (auto& c : bench::pilot_cases()) cases.push_back(c);
   struct Run {
@@ -104,12 +104,12 @@ int main(int argc, char** argv) {
         return 2;
       }
       const Indicators& I = r.indicators;
-      fmt::print(csv, "{},{},{:.5f},{},{},{},{:.4f},{:.4f},{:.4f},{:.5f},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.5f},{:.4f},{:.4f}\n",
+      fmt::print(csv, "{},{},{:.5f},{},{},{},{:.4f},{:.4f},{:.4f},{:.5f},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.5f},{:.4f},{:.4f},{:.5f},{:.5f}\n",
                  c.name, c.config.mill.rotation == Rotation::Ccw ? "ccw" : "cw", I.fraction_critical,
                  c.config.charge.filling, run.model, run.model == "layer" ? run.variant : "-", I.toe_deg,
                  I.shoulder_deg, I.com_angle_deg, I.com_radius_m, I.net_power_kw, I.alt_net_power_kw,
                  I.no_load_power_kw, I.charge_area_m2, I.n_layers, I.n_trajectories, I.inner_radius_m,
-                 r.stats.simulated_s, r.stats.wall_s);
+                 r.stats.simulated_s, r.stats.wall_s, r.stats.airborne_fraction, r.stats.inner_radius_beta);
       std::fflush(csv);
       fmt::print("{} {} {}: toe {:.1f} shoulder {:.1f} com {:.1f} power {:.4g} kW ({:.2f} s)\n", c.name, run.model,
                  run.variant, I.toe_deg, I.shoulder_deg, I.com_angle_deg, I.net_power_kw, r.stats.wall_s);

@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
     in.surface = &s;
     in.revolutions = revs;
     in.seed = 1;
-    for (int pass = 0; pass <= beta_passes; ++pass) {
+    for (int pass = 0; pass <= (model == "layer" ? beta_passes : 0); ++pass) {
       const auto t0 = std::chrono::steady_clock::now();
       try {
         const ChargeResult r = find_charge_model(model).make()->run(in);

@@ -52,9 +52,9 @@ struct ModelSpec {
                                         //     lifter's angle (the thesis); >= 0, only those within this many
                                         //     element widths of the foot of the leading face, the rest as unheld
                                         //     (docs/models/layer.md §3, "The release study")
-  double inner_radius_beta = -1;        // [-] studies only: version 1.2's en-masse share beta in eq. 4.14 (< 0:
-                                        //     Morrell's, from his flight time; docs/models/layer-worn.md, "The
-                                        //     en-masse share of eq. 4.14")
+  double inner_radius_beta = -1;        // [-] studies only: the en-masse share beta in eq. 4.14 (< 0: Morrell's,
+                                        //     from his flight time; docs/models/layer-worn.md, "The en-masse share
+                                        //     of eq. 4.14"); sets r_i, so version 1.2's band and every version's slip
   double relaxation_interval_cells = 0.5;  // [-] layer model: support sweep and surface relaxation every this many
                                          //     outer cells of shell travel (docs/models/layer.md §9)
   double max_courant = 0;               // [-] studies only: shell travel per step / media diameter allowed

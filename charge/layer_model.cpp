@@ -438,7 +438,8 @@ LayerSim::LayerSim(const ChargeInput& in) : in_(in) {
                                  ms.unheld_friction_coefficient));
   if (!(ms.inner_radius_beta < 0 || (ms.inner_radius_beta > 0 && ms.inner_radius_beta <= 1)))
     throw InputError("model.inner_radius_beta",
-                     fmt::format("inner_radius_beta = {}: allowed 0 < value <= 1 (< 0: Morrell's)", ms.inner_radius_beta));
+                     fmt::format("inner_radius_beta = {}: allowed 0 < value <= 1 (< 0: Morrell's; ignored in a "
+                                 "centrifuged mill)", ms.inner_radius_beta));
   if (!(ms.held_pocket_balls <= 100))
     throw InputError("model.held_pocket_balls",
                      fmt::format("held_pocket_balls = {}: allowed value <= 100 (< 0: the whole layer)", ms.held_pocket_balls));
@@ -549,7 +550,15 @@ void LayerSim::setup_layers() {
   }
   si.lifter_angle_rad = beta;
   double shoulder = centrifuged ? 0.5 * kPi : morrell_shoulder_rad(J_, phi_, toe_morrell_);
-  r_i_ = centrifuged ? R_eff_ * std::sqrt(1.0 - J_) : morrell_inner_radius(R_eff_, Nm, J_, toe_morrell_, shoulder).inner_radius_m;
+  // eq. 4.14 with Morrell's en-masse share beta, or the study's
+  // (docs/models/layer-worn.md, "The en-masse share of eq. 4.14")
+  auto inner_radius = [&](double thS) {
+    beta_ = in_.model.inner_radius_beta > 0 ? in_.model.inner_radius_beta
+                                            : morrell_inner_radius(R_eff_, Nm, J_, toe_morrell_, thS).beta;
+    return inner_radius_for_beta(R_eff_, J_, toe_morrell_, thS, beta_);
+  };
+  beta_ = 1.0;  // centrifuged: all en masse, r_i from the filling alone
+  r_i_ = centrifuged ? R_eff_ * std::sqrt(1.0 - J_) : inner_radius(shoulder);
   std::vector<double> w;
   for (int it = 0; it < 6; ++it) {
     si.inner_radius_m = r_i_;
@@ -566,15 +575,7 @@ void LayerSim::setup_layers() {
     if (n == 0 && std::isfinite(L_[0].release)) sum = L_[0].release, n = 1;
     if (centrifuged || n == 0) break;
     shoulder = sum / n;
-    const MorrellInnerRadius mi = morrell_inner_radius(R_eff_, Nm, J_, toe_morrell_, shoulder);
-    double ri = mi.inner_radius_m;
-    beta_ = mi.beta;
-    if (in_.model.inner_radius_beta > 0) {
-      // a given en-masse share in eq. 4.14 (the study of
-      // docs/models/layer-worn.md, "The en-masse share of eq. 4.14")
-      beta_ = in_.model.inner_radius_beta;
-      ri = R_eff_ * std::sqrt(std::max(0.0, 1.0 - 2.0 * kPi * beta_ * J_ / (2.0 * kPi + shoulder - toe_morrell_)));
-    }
+    const double ri = inner_radius(shoulder);
     const bool done = std::abs(ri - r_i_) < 1e-4 * R_eff_;
     r_i_ = ri;
     if (done) break;
@@ -1817,7 +1818,9 @@ void LayerSim::sample(double tau, double w) {
     occupancy_->add_to_bin(j, occupancy_->angular_bin(j, wrap2pi(fast_atan2(q.y(), q.x()))), cell_w, mass_w);
   }
   occupancy_->add_time(w);
-  airborne_w_ += static_cast<double>(flights_.size()) * w;
+  // airborne: flying, not still sliding along a lifter face (t0 > tau with lifter_slide)
+  for (const Flight& f : flights_)
+    if (tau >= f.t0) airborne_w_ += w;
   airborne_t_ += w;
   // --- liner loads from the outer layer (thesis eqs. 4.10/4.11, 5.1/5.2),
   // with the column heights of update_columns(tau)

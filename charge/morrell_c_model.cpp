@@ -30,10 +30,15 @@ MorrellInnerRadius morrell_inner_radius(double rm, double Nm, double J, double t
   o.time_in_charge_s = span / (2.0 * kPi * 0.5 * Nm);
   o.time_in_flight_s = std::sqrt(std::max(0.0, 2.0 * o.mean_radius_m * (std::sin(thS) - std::sin(thT)) / kGravity));
   o.beta = o.time_in_charge_s / (o.time_in_flight_s + o.time_in_charge_s);
-  // inner surface radius (Morrell 1996; thesis eq. 4.14)
-  const double qi = 1.0 - 2.0 * kPi * o.beta * J / span;
-  o.inner_radius_m = rm * std::sqrt(std::max(0.0, qi));
+  o.inner_radius_m = inner_radius_for_beta(rm, J, thT, thS, o.beta);
   return o;
+}
+
+double inner_radius_for_beta(double rm, double J, double thT, double thS, double beta) {
+  // inner surface radius (Morrell 1996; thesis eq. 4.14): the share beta of
+  // the charge J fills the annulus r_i..r_m over the angle from toe to shoulder
+  const double span = 2.0 * kPi + thS - thT;
+  return rm * std::sqrt(std::max(0.0, 1.0 - 2.0 * kPi * beta * J / span));
 }
 
 double morrell_charge_density(double J, double JB, double E, double U, double S, double rho_o, double rho_b,

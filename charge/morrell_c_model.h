@@ -64,6 +64,9 @@ struct MorrellInnerRadius {
 };
 MorrellInnerRadius morrell_inner_radius(double mill_radius_m, double speed_rps, double filling, double toe_rad,
                                         double shoulder_rad);
+/// Inner surface radius [m] of thesis eq. 4.14 for a given en-masse share beta
+/// (the share of the charge between the toe and the shoulder).
+double inner_radius_for_beta(double mill_radius_m, double filling, double toe_rad, double shoulder_rad, double beta);
 
 /// Charge density rho_c (Morrell 1996), any consistent density unit.
 double morrell_charge_density(double filling, double ball_filling, double porosity, double void_fill,

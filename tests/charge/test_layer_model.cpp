@@ -436,6 +436,7 @@ TEST_CASE("the layer model refuses input it cannot take", "[charge][layer][input
   refused([](ChargeInput& in) { in.model.held_pocket_balls = 101; }, "model.held_pocket_balls");
   refused([](ChargeInput& in) { in.model.inner_radius_beta = 0; }, "model.inner_radius_beta");
   refused([](ChargeInput& in) { in.model.inner_radius_beta = 1.5; }, "model.inner_radius_beta");
+  refused([](ChargeInput& in) { in.model.inner_radius_beta = std::nan(""); }, "model.inner_radius_beta");
   refused([](ChargeInput& in) { in.model.held_pocket_balls = std::nan(""); }, "model.held_pocket_balls");
   refused([](ChargeInput& in) { in.model.element_size_diameters = 4.5; }, "model.element_size_diameters");
   {  // pilot test 5 (50 mm media in a 0.75 m mill): elements of 2 media diameters leave three layers
@@ -574,7 +575,8 @@ TEST_CASE("release study: the thesis by default, Davis' angle for unheld layers 
 }
 
 // The en-masse share of eq. 4.14 (docs/models/layer-worn.md, "The en-masse share of eq. 4.14").
-TEST_CASE("version 1.2 with its own airborne share in eq. 4.14 puts the toe near Morrell's", "[charge][layer]") {
+TEST_CASE("version 1.2 with its own airborne share in eq. 4.14 puts the toe near Morrell's and the DEM's",
+          "[charge][layer]") {
   const Config c = mill_config("qiu2001_sag.toml");
   const LinerSurface s = build_liner_surface(c.mill, c.liner);
   ChargeInput in = charge_input(c, s, 2, 1);
@@ -584,6 +586,12 @@ TEST_CASE("version 1.2 with its own airborne share in eq. 4.14 puts the toe near
   CHECK(a.stats.inner_radius_beta == Approx(0.82).margin(0.01));
   CHECK(a.stats.airborne_fraction > 0.05);
   CHECK(a.stats.airborne_fraction < 0.13);
+  {  // Morrell's share given as the study's value: eq. 4.14 gives the same r_i
+    ChargeInput same = in;
+    same.model.inner_radius_beta = a.stats.inner_radius_beta;
+    const ChargeResult m = run_model("layer", same);
+    CHECK(m.indicators.inner_radius_m == Approx(a.indicators.inner_radius_m).margin(1e-9));
+  }
   // with its own share the band outside r_i is thicker (smaller r_i), so
   // shorter for the same en-masse mass: the toe moves from about 215 deg
   // towards Morrell's (eq. 4.15, 240.4 deg) and the DEM's (233.8 deg,
