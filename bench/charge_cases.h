@@ -60,6 +60,21 @@ inline std::vector<Case> pilot_cases() {
   return out;
 }
 
+/// The layer model's study options as bench options (docs/models/layer.md §3,
+/// "The release study"; docs/models/layer-worn.md, "The en-masse share of eq.
+/// 4.14"): `--unheld-mu MU`, `--pocket-balls P`, `--lifter-slide on|off` and
+/// `--beta B` set their ModelSpec fields; false for any other option or value.
+inline bool set_study_option(ModelSpec& m, const std::string& k, const std::string& v) {
+  if (k == "--lifter-slide") {
+    if (v != "on" && v != "off") return false;
+    m.lifter_slide = v == "on";
+  } else if (k == "--unheld-mu") m.unheld_friction_coefficient = std::stod(v);
+  else if (k == "--pocket-balls") m.held_pocket_balls = std::stod(v);
+  else if (k == "--beta") m.inner_radius_beta = std::stod(v);
+  else return false;
+  return true;
+}
+
 /// A ChargeInput for `c` (the surface must outlive it).
 inline ChargeInput make_input(const Config& c, const LinerSurface& s, const std::string& model,
                               const std::string& variant, double revolutions) {

@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -29,8 +30,7 @@ using namespace linerlife;
 
 int main(int argc, char** argv) {
   std::vector<std::string> pos;
-  double unheld_mu = -1, pocket_balls = -1;
-  int slide = -1;  // -1: each mill's own setting
+  std::vector<std::pair<std::string, std::string>> study;  // set on every layer run, over each mill's own
   int beta_passes = 0;
   bool bad = false;
   for (int i = 1; i < argc && !bad; ++i) {
@@ -44,12 +44,11 @@ int main(int argc, char** argv) {
       break;
     }
     const std::string v = argv[++i];
-    if (a == "--lifter-slide" && (v == "on" || v == "off"))
-      slide = v == "on";
-    else if (a == "--beta-iterate")
+    ModelSpec check;
+    if (a == "--beta-iterate")
       beta_passes = std::stoi(v);
-    else if (a == "--unheld-mu" || a == "--pocket-balls")
-      (a == "--unheld-mu" ? unheld_mu : pocket_balls) = std::stod(v);
+    else if (a != "--beta" && bench::set_study_option(check, a, v))
+      study.emplace_back(a, v);
     else
       bad = true;
   }
@@ -88,9 +87,7 @@ int main(int argc, char** argv) {
       }
     for (const Run& run : runs) {
       ChargeInput in = bench::make_input(c.config, s, run.model, run.variant, 0);
-      in.model.unheld_friction_coefficient = unheld_mu;
-      in.model.held_pocket_balls = pocket_balls;
-      if (slide >= 0) in.model.lifter_slide = slide == 1;
+      for (const auto& [k, v] : study) bench::set_study_option(in.model, k, v);
       ChargeResult r;
       try {
         r = find_charge_model(run.model).make()->run(in);

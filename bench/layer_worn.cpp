@@ -28,6 +28,7 @@
 
 #include <fmt/format.h>
 
+#include "bench/charge_cases.h"
 #include "bench/worn_profiles.h"
 #include "charge/charge_model.h"
 #include "geometry/measured_profile.h"
@@ -65,12 +66,8 @@ int main(int argc, char** argv) {
     else if (k == "--only") only = parse_ints(v);
     else if (k == "--blend") blend = parse_ints(v);
     else if (k == "--csv-dir") csv_dir = v;
-    else if (k == "--unheld-mu") c.model.unheld_friction_coefficient = std::stod(v);
-    else if (k == "--pocket-balls") c.model.held_pocket_balls = std::stod(v);
-    else if (k == "--lifter-slide" && (v == "on" || v == "off")) c.model.lifter_slide = v == "on";
-    else if (k == "--beta") c.model.inner_radius_beta = std::stod(v);
     else if (k == "--beta-iterate") beta_passes = std::stoi(v);
-    else {
+    else if (!bench::set_study_option(c.model, k, v)) {
       std::fprintf(stderr, "unknown option or value: %s %s\n", k.c_str(), v.c_str());
       return 2;
     }

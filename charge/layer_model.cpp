@@ -90,6 +90,9 @@ struct HeldLaunch {
   double vr = 0, vt = 0;   // [m/s] launch velocity, polar components
 };
 
+/// An element no lifter holds (the release study's plate elements, departures()).
+const HeldLaunch kUnheldLaunch{};
+
 struct Landing {
   double t = 0;        // [s]
   int flight = 0;      // index in the flight list
@@ -910,8 +913,7 @@ void LayerSim::departures(double t0, double t1) {
         // the release study (docs/models/layer.md §3, "The release study"): only the elements in
         // a lifter's pocket leave at its angle, the rest of the layer as unheld
         if (pocket_balls_ >= 0) seg = pocket_lifter(j, seg, psi);
-        static const HeldLaunch kUnheld{};
-        const HeldLaunch& h = seg >= 0 ? held_[j][seg] : kUnheld;
+        const HeldLaunch& h = seg >= 0 ? held_[j][seg] : kUnheldLaunch;
         const double rel = h.held ? (h.released ? h.release : kInf) : l.release;
         if (!std::isfinite(rel)) continue;
         const double w = std::remainder(rel - a0, kTwoPi);
@@ -1816,11 +1818,9 @@ void LayerSim::sample(double tau, double w) {
     const V q = flight_position(f, tau);  // canonical frame (the indicators are mirrored at the end)
     const int j = occupancy_->ring(q.norm());
     occupancy_->add_to_bin(j, occupancy_->angular_bin(j, wrap2pi(fast_atan2(q.y(), q.x()))), cell_w, mass_w);
+    if (tau >= f.t0) airborne_w_ += w;  // airborne: flying, not still sliding along a lifter face (lifter_slide)
   }
   occupancy_->add_time(w);
-  // airborne: flying, not still sliding along a lifter face (t0 > tau with lifter_slide)
-  for (const Flight& f : flights_)
-    if (tau >= f.t0) airborne_w_ += w;
   airborne_t_ += w;
   // --- liner loads from the outer layer (thesis eqs. 4.10/4.11, 5.1/5.2),
   // with the column heights of update_columns(tau)
