@@ -1,10 +1,17 @@
 // `linerlife compare CONFIG... | CONFIG --vary KEY=v1,v2,...`: forecasts for
 // several lifter designs or operating choices side by side (face angle,
 // height, rows, hi-lo, speed...): liner life, mean and end-of-life power,
-// direct liner impacts.
+// direct liner impacts. The cases' forecasts are independent: they run
+// several at once (--jobs), each on one thread, with the same results as one
+// after the other.
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <iostream>
+#include <mutex>
 #include <sstream>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -26,6 +33,7 @@ struct CompareOptions {
   std::string method;
   bool json = false;
   std::string out;
+  int jobs = 0;  // forecasts at once; 0: automatic (compare_jobs())
 };
 
 struct Case {
@@ -47,6 +55,17 @@ double time_mean(const std::vector<LifeRecord>& h, double LifeRecord::*field) {
     span += dt;
   }
   return span > 0 ? area / span : (h.empty() ? NAN : h.front().*field);
+}
+
+/// How many forecasts run at once: `requested` if given, else one per core
+/// (at most one per case), and one at a time when a case drives the DEM,
+/// which spreads its own contacts over the cores.
+int compare_jobs(int requested, const std::vector<Case>& cases) {
+  if (requested > 0) return std::min<int>(requested, static_cast<int>(cases.size()));
+  for (const Case& k : cases)
+    if (k.config.model.charge == "dem") return 1;
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return std::min<int>(cores, static_cast<int>(cases.size()));
 }
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -86,6 +105,9 @@ int run_compare(const CompareOptions& o) {
       throw InputError("compare", "compare needs two or more configurations, or one with --vary KEY=v1,v2,...");
     for (const auto& p : o.configs) cases.push_back({p, load_config_file(p), {}});
   }
+  if (o.jobs < 0)
+    throw InputError("--jobs", fmt::format("--jobs {}: allowed 1 <= value (forecasts at once; absent or 0: one per "
+                                           "core, one at a time with the DEM)", o.jobs));
   if (!o.out.empty()) check_output_dir_writable(o.out);
   // set every case up before running any, so a bad one is refused at once
   std::vector<ForecastSetup> setups;
@@ -100,14 +122,48 @@ int run_compare(const CompareOptions& o) {
       throw in_case(k, e);
     }
   }
-  for (size_t i = 0; i < cases.size(); ++i) {
-    Case& k = cases[i];
-    if (!o.json) std::cerr << fmt::format("  forecast {}/{}: {}\n", i + 1, cases.size(), k.label);
-    try {
-      k.result = run_forecast(setups[i].input, *setups[i].provider, k.config.forecast);
-    } catch (const InputError& e) {
-      throw in_case(k, e);  // refused inside the forecast: the key's line, this case's value
+  // The forecasts, `jobs` at once. Each worker takes the next case in order;
+  // after a failure no new case starts, and the failure of the lowest case
+  // is reported (every case before it has started, so that is the one a run
+  // one case after the other would report).
+  const int jobs = compare_jobs(o.jobs, cases);
+  std::vector<std::exception_ptr> failed(cases.size());
+  std::atomic<size_t> next{0};
+  std::atomic<bool> stop{false};
+  std::mutex progress;
+  auto worker = [&] {
+    for (;;) {
+      if (stop.load()) return;
+      const size_t i = next.fetch_add(1);  // a case taken is run
+      if (i >= cases.size()) return;
+      if (!o.json) {
+        const std::lock_guard<std::mutex> lock(progress);
+        std::cerr << fmt::format("  forecast {}/{}: {}\n", i + 1, cases.size(), cases[i].label);
+      }
+      try {
+        cases[i].result = run_forecast(setups[i].input, *setups[i].provider, cases[i].config.forecast);
+      } catch (...) {
+        failed[i] = std::current_exception();
+        stop = true;
+      }
     }
+  };
+  if (jobs <= 1) {
+    worker();
+  } else {
+    std::vector<std::thread> pool;
+    for (int t = 0; t < jobs; ++t) pool.emplace_back(worker);
+    for (std::thread& t : pool) t.join();
+  }
+  for (size_t i = 0; i < cases.size(); ++i) {
+    if (!failed[i]) continue;
+    try {
+      std::rethrow_exception(failed[i]);
+    } catch (const InputError& e) {
+      throw in_case(cases[i], e);  // refused inside the forecast: the key's line, this case's value
+    }
+  }
+  for (Case& k : cases) {
     if (!k.result.notes.empty()) std::cerr << fmt::format("  {}:\n", k.label);
     note_drive_notes(k.result.notes, k.result.stats.charge_redrives);
     k.mean_power_kw = time_mean(k.result.history, &LifeRecord::net_power_kw);
@@ -193,6 +249,7 @@ void register_compare(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--method", o->method, "ode (default), amplify or euler")->check(CLI::IsMember({"ode", "amplify", "euler"}));
   cmd->add_flag("--json", o->json, "Print one JSON object instead of the table");
   cmd->add_option("--out", o->out, "Write compare.h5 and charts into this folder");
+  cmd->add_option("--jobs", o->jobs, "Forecasts run at once (default: one per core; one at a time with the DEM)");
   cmd->callback([&run, o] { run = [o] { return run_compare(*o); }; });
 }
 

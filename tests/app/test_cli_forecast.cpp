@@ -208,6 +208,35 @@ TEST_CASE("compare --vary forecasts one case per value and ranks them in a table
   fs::remove_all(dir);
 }
 
+TEST_CASE("compare runs its forecasts at once with the results of one after the other", "[app][cli][compare]") {
+  // --jobs: each worker takes the next case; the table, the JSON and the
+  // results file must not depend on how many run at once or in which order
+  // they finish (three cases on two workers: one worker takes two).
+  const fs::path dir = temp_dir("fc_compare_jobs");
+  write_file(dir / "m.toml", fast_qiu());
+  const std::string cmd =
+      "compare " + (dir / "m.toml").string() + " --vary liner.face_angle_leading_deg=15,20,22 --json --jobs ";
+  const RunResult one = run_linerlife(cmd + "1");
+  const RunResult two = run_linerlife(cmd + "2");
+  INFO(one.err << two.err);
+  REQUIRE(one.code == 0);
+  REQUIRE(two.code == 0);
+  CHECK(two.out == one.out);
+  const JsonValue j = parse_json(two.out);
+  const auto& cases = j["cases"].items();
+  REQUIRE(cases.size() == 3);
+  CHECK(cases[0]["case"].str() == "liner.face_angle_leading_deg=15");
+  CHECK(cases[2]["case"].str() == "liner.face_angle_leading_deg=22");
+  // the three designs differ, so a case's result cannot have gone to another
+  CHECK(cases[0]["operating_hours"].num() != cases[1]["operating_hours"].num());
+  CHECK(cases[1]["operating_hours"].num() != cases[2]["operating_hours"].num());
+  // a negative count is refused, naming the option and what is allowed
+  const RunResult bad = run_linerlife(cmd + "-1");
+  CHECK(bad.code == 2);
+  CHECK_THAT(bad.err, Catch::Contains("--jobs -1") && Catch::Contains("allowed 1 <= value"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("calibrate recovers the wear factor of synthetic scans from the command line", "[app][cli][calibrate]") {
   // Scans: the forecast of the same mill with every calibration factor 1.3.
   const fs::path dir = temp_dir("fc_calibrate");
