@@ -20,6 +20,7 @@
 #include "app/results.h"
 #include "forecast/calibrate.h"
 #include "forecast/measured_history.h"
+#include "forecast/parallel.h"
 #include "geometry/build_liner_surface.h"
 #include "geometry/errors.h"
 
@@ -32,6 +33,7 @@ struct CalibrateOptions {
   std::string fit = "abrasion,impact";
   bool json = false;
   std::string out;
+  int jobs = 0;  // forecasts at once (the finite differences); 0: default_jobs()
 };
 
 /// Which calibration factors each fitted parameter scales.
@@ -70,6 +72,11 @@ int run_calibrate(const CalibrateOptions& o) {
   const MeasuredHistory h = load_measured_history(o.measured);
   validate_measured_history(h, c.mill.shell_radius_m(), c.liner.segments);
   const std::vector<Param> ps = parse_fit(o.fit);
+  if (o.jobs < 0)
+    throw InputError("--jobs", fmt::format("--jobs {}: allowed 1 <= value (forecasts at once; absent or 0: one per "
+                                           "core, one at a time with the DEM)", o.jobs));
+  // the finite differences: one forecast per parameter, and one more for the life's spread
+  const int jobs = o.jobs > 0 ? o.jobs : default_jobs(static_cast<int>(ps.size()) + 1, c.model.charge == "dem");
   if (!o.out.empty()) check_output_dir_writable(o.out);
 
   ForecastSetup setup = make_forecast_setup(c);  // checks the models at setup
@@ -84,6 +91,7 @@ int run_calibrate(const CalibrateOptions& o) {
   p.spec = c.forecast;
   p.measured = h;
   p.segments = c.liner.segments;
+  p.jobs = jobs;
   if (!o.json) std::cerr << fmt::format("  fitting {} parameter(s) to {} profiles...\n", ps.size(), h.snapshots.size());
   const CalibrationResult r = calibrate(p);
 
@@ -104,7 +112,7 @@ int run_calibrate(const CalibrateOptions& o) {
   auto worn_ring = std::make_shared<LinerSurface>(build_liner_surface(c.mill, worn));
   ForecastInput rest = setup.input;
   rest.initial = worn_ring.get();
-  const LifeQuantiles q = life_quantiles(r.params, r.covariance_log, p.make_provider, rest, c.forecast);
+  const LifeQuantiles q = life_quantiles(r.params, r.covariance_log, p.make_provider, rest, c.forecast, jobs);
   const Calendar& cal_days = c.forecast.calendar;
   auto date = [&](double remaining_h) { return iso_date(cal_days.date_after(last.hours + remaining_h)); };
 
@@ -198,6 +206,8 @@ void register_calibrate(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--fit", o->fit, "Factors to fit: abrasion,impact (default), abrasion, impact, all");
   cmd->add_flag("--json", o->json, "Print one JSON object");
   cmd->add_option("--out", o->out, "Write calibrated.toml, calibrate.h5 and charts into this folder");
+  cmd->add_option("--jobs", o->jobs, "Forecasts run at once for the finite differences (default: one per core; one "
+                                     "at a time with the DEM)");
   cmd->callback([&run, o] { run = [o] { return run_calibrate(*o); }; });
 }
 

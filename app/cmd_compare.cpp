@@ -4,14 +4,10 @@
 // direct liner impacts. The cases' forecasts are independent: they run
 // several at once (--jobs), each on one thread, with the same results as one
 // after the other.
-#include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <iostream>
 #include <mutex>
 #include <sstream>
-#include <thread>
 
 #include <fmt/format.h>
 
@@ -22,6 +18,7 @@
 #include "app/output_dir.h"
 #include "app/plots.h"
 #include "app/results.h"
+#include "forecast/parallel.h"
 #include "geometry/errors.h"
 
 namespace linerlife {
@@ -33,7 +30,7 @@ struct CompareOptions {
   std::string method;
   bool json = false;
   std::string out;
-  int jobs = 0;  // forecasts at once; 0: automatic (compare_jobs())
+  int jobs = 0;  // forecasts at once; 0: default_jobs()
 };
 
 struct Case {
@@ -55,17 +52,6 @@ double time_mean(const std::vector<LifeRecord>& h, double LifeRecord::*field) {
     span += dt;
   }
   return span > 0 ? area / span : (h.empty() ? NAN : h.front().*field);
-}
-
-/// How many forecasts run at once: `requested` if given, else one per core
-/// (at most one per case), and one at a time when a case drives the DEM,
-/// which spreads its own contacts over the cores.
-int compare_jobs(int requested, const std::vector<Case>& cases) {
-  if (requested > 0) return std::min<int>(requested, static_cast<int>(cases.size()));
-  for (const Case& k : cases)
-    if (k.config.model.charge == "dem") return 1;
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  return std::min<int>(cores, static_cast<int>(cases.size()));
 }
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -122,47 +108,25 @@ int run_compare(const CompareOptions& o) {
       throw in_case(k, e);
     }
   }
-  // The forecasts, `jobs` at once. Each worker takes the next case in order;
-  // after a failure no new case starts, and the failure of the lowest case
-  // is reported (every case before it has started, so that is the one a run
-  // one case after the other would report).
-  const int jobs = compare_jobs(o.jobs, cases);
-  std::vector<std::exception_ptr> failed(cases.size());
-  std::atomic<size_t> next{0};
-  std::atomic<bool> stop{false};
+  // The forecasts, --jobs at once (forecast/parallel.h: a failure stops new
+  // cases, and the lowest failing case is reported, as one after the other).
+  bool dem = false;
+  for (const Case& k : cases) dem = dem || k.config.model.charge == "dem";
+  const int n = static_cast<int>(cases.size());
   std::mutex progress;
-  auto worker = [&] {
-    for (;;) {
-      if (stop.load()) return;
-      const size_t i = next.fetch_add(1);  // a case taken is run
-      if (i >= cases.size()) return;
-      if (!o.json) {
-        const std::lock_guard<std::mutex> lock(progress);
-        std::cerr << fmt::format("  forecast {}/{}: {}\n", i + 1, cases.size(), cases[i].label);
-      }
-      try {
-        cases[i].result = run_forecast(setups[i].input, *setups[i].provider, cases[i].config.forecast);
-      } catch (...) {
-        failed[i] = std::current_exception();
-        stop = true;
-      }
+  parallel_for(n, o.jobs > 0 ? o.jobs : default_jobs(n, dem), [&](int i) {
+    Case& k = cases[static_cast<size_t>(i)];
+    if (!o.json) {
+      const std::lock_guard<std::mutex> lock(progress);
+      std::cerr << fmt::format("  forecast {}/{}: {}\n", i + 1, n, k.label);
     }
-  };
-  if (jobs <= 1) {
-    worker();
-  } else {
-    std::vector<std::thread> pool;
-    for (int t = 0; t < jobs; ++t) pool.emplace_back(worker);
-    for (std::thread& t : pool) t.join();
-  }
-  for (size_t i = 0; i < cases.size(); ++i) {
-    if (!failed[i]) continue;
     try {
-      std::rethrow_exception(failed[i]);
+      k.result = run_forecast(setups[static_cast<size_t>(i)].input, *setups[static_cast<size_t>(i)].provider,
+                              k.config.forecast);
     } catch (const InputError& e) {
-      throw in_case(cases[i], e);  // refused inside the forecast: the key's line, this case's value
+      throw in_case(k, e);  // refused inside the forecast: the key's line, this case's value
     }
-  }
+  });
   for (Case& k : cases) {
     if (!k.result.notes.empty()) std::cerr << fmt::format("  {}:\n", k.label);
     note_drive_notes(k.result.notes, k.result.stats.charge_redrives);

@@ -1,12 +1,14 @@
 #include "forecast/calibrate.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
+#include "forecast/parallel.h"
 #include "geometry/errors.h"
 
 namespace linerlife {
@@ -42,7 +44,7 @@ namespace {
 /// no end-of-life criteria: the residuals of every measured point.
 struct Fit {
   const CalibrationProblem& p;
-  int forecasts = 0;
+  std::atomic<int> forecasts{0};  // the finite differences run at once (p.jobs)
 
   ForecastSpec fit_spec() const {
     ForecastSpec s = p.spec;
@@ -108,13 +110,18 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
   double lambda = 1e-3;
   const double h = 0.02;  // finite-difference step in ln(parameter): 2 %
   Eigen::MatrixXd J(m, np);
-  for (int it = 0; it < p.max_iterations; ++it) {
-    res.iterations = it + 1;
-    for (int j = 0; j < np; ++j) {
+  // one forecast per parameter, independent: p.jobs at once, each filling
+  // its own column
+  auto jacobian = [&] {
+    parallel_for(np, p.jobs, [&](int j) {
       Eigen::VectorXd t2 = theta;
       t2(j) += h;
       J.col(j) = (fit.residuals(exp_of(t2)) - r) / h;
-    }
+    });
+  };
+  for (int it = 0; it < p.max_iterations; ++it) {
+    res.iterations = it + 1;
+    jacobian();
     const Eigen::MatrixXd A = J.transpose() * J;
     const Eigen::VectorXd g = J.transpose() * r;
     bool improved = false;
@@ -144,11 +151,7 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
     if (res.converged) break;
   }
   // covariance of ln(parameters) at the optimum: s^2 (J^T J)^-1, with J re-evaluated there
-  for (int j = 0; j < np; ++j) {
-    Eigen::VectorXd t2 = theta;
-    t2(j) += h;
-    J.col(j) = (fit.residuals(exp_of(t2)) - r) / h;
-  }
+  jacobian();
   const double s2 = rss / static_cast<double>(m - np);
   res.covariance_log = s2 * (J.transpose() * J).inverse();
   res.params = exp_of(theta);
@@ -174,24 +177,28 @@ std::vector<ProfileRecord> fitted_profiles(const CalibrationProblem& p, const st
 }
 
 LifeQuantiles life_quantiles(const std::vector<double>& params, const Eigen::MatrixXd& cov,
-                             const ProviderFactory& make_provider, const ForecastInput& input, const ForecastSpec& spec) {
+                             const ProviderFactory& make_provider, const ForecastInput& input, const ForecastSpec& spec,
+                             int jobs) {
   LifeQuantiles q;
-  auto life = [&](const std::vector<double>& pr, std::string* criterion) {
+  const int np = static_cast<int>(params.size());
+  const double h = 0.02;
+  // the life at the fitted parameters (k = 0) and with each one raised by h
+  // in ln (k = j + 1): independent forecasts, `jobs` at once
+  std::vector<double> lives(static_cast<size_t>(np) + 1);
+  std::vector<std::string> criteria(lives.size());
+  parallel_for(np + 1, jobs, [&](int k) {
+    std::vector<double> pr = params;
+    if (k > 0) pr[static_cast<size_t>(k - 1)] *= std::exp(h);
     auto provider = make_provider(pr);
     const ForecastResult f = run_forecast(input, *provider, spec);
-    ++q.forecasts;
-    if (criterion) *criterion = f.criterion;
-    return f.operating_hours;
-  };
-  const double t50 = life(params, &q.criterion);
-  const int np = static_cast<int>(params.size());
+    lives[static_cast<size_t>(k)] = f.operating_hours;
+    criteria[static_cast<size_t>(k)] = f.criterion;
+  });
+  q.forecasts = np + 1;
+  q.criterion = criteria[0];
+  const double t50 = lives[0];
   Eigen::VectorXd g(np);
-  const double h = 0.02;
-  for (int j = 0; j < np; ++j) {
-    std::vector<double> p2 = params;
-    p2[static_cast<size_t>(j)] *= std::exp(h);
-    g(j) = (std::log(life(p2, nullptr)) - std::log(t50)) / h;
-  }
+  for (int j = 0; j < np; ++j) g(j) = (std::log(lives[static_cast<size_t>(j) + 1]) - std::log(t50)) / h;
   q.sigma_ln = std::sqrt(std::max(0.0, (g.transpose() * cov * g)(0, 0)));
   const double z = 1.2815515655446004;  // the 90 % quantile of the standard normal
   q.p50_h = t50;

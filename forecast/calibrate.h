@@ -30,6 +30,7 @@ struct CalibrationProblem {
   MeasuredHistory measured;        // profiles at hours since new, in the unrolled frame of segment 0
   int segments = 0;                // lifter rows (for the unrolled -> mill mapping)
   int max_iterations = 12;
+  int jobs = 1;                    // forecasts at once for the finite differences (forecast/parallel.h)
 };
 
 struct CalibrationResult {
@@ -66,6 +67,7 @@ struct LifeQuantiles {
   int forecasts = 0;
 };
 LifeQuantiles life_quantiles(const std::vector<double>& params, const Eigen::MatrixXd& covariance_log,
-                             const ProviderFactory& make_provider, const ForecastInput& input, const ForecastSpec& spec);
+                             const ProviderFactory& make_provider, const ForecastInput& input, const ForecastSpec& spec,
+                             int jobs = 1);
 
 }  // namespace linerlife

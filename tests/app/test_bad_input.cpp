@@ -192,6 +192,8 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
       {"compare" + o, {"compare needs two or more configurations"}},
       {"compare --vary foo" + o, {"--vary foo", "KEY=v1,v2"}},
       {"compare --vary liner.bogus=1,2" + o, {"unknown configuration key [liner] bogus"}},
+      {"compare --vary liner.lifter_height_m=0.23,0.25 --jobs -1" + o, {"--jobs -1", "allowed 1 <= value"}},
+      {"calibrate --measured " + csv + " --jobs -2" + o, {"--jobs -2", "allowed 1 <= value"}},
       {"plot" + o, {"RESULTS is required"}},
       {"plot " + (dir / "missing.h5").string() + o, {"results file", "missing.h5 does not exist"}},
       {"plot " + toml + o, {"a.toml is not a readable HDF5 file"}},

@@ -1,10 +1,15 @@
 // Calibration against measured profiles: recovery of known coefficients from
 // synthetic scans, and refusal of bad measurement files.
+#include <atomic>
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
 #include "forecast/calibrate.h"
+#include "forecast/parallel.h"
 #include "geometry/build_liner_surface.h"
 #include "geometry/errors.h"
 #include "geometry/measured_profile.h"
@@ -129,6 +134,68 @@ TEST_CASE("calibrate separates two coefficients and gives a life spread", "[fore
   CHECK(q.p50_h < q.p90_h);
   TwoPartRates fitted(r.params[0], r.params[1]);
   CHECK(q.p50_h == Approx(run_forecast(in, fitted, spec()).operating_hours).epsilon(1e-9));
+}
+
+TEST_CASE("the finite differences of a calibration run at once with the results of one after the other",
+          "[forecast][calibrate]") {
+  // p.jobs and life_quantiles()' jobs: the forecasts of the Jacobian's
+  // columns and of the life's spread are independent; running them on
+  // threads must not change a bit of the fit (one iteration is enough to
+  // compare, not to converge).
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  CalibrationProblem p;
+  p.names = {"abrasion", "impact"};
+  p.initial = {1.0, 1.0};
+  p.make_provider = [](const std::vector<double>& k) { return std::make_unique<TwoPartRates>(k[0], k[1]); };
+  p.input.initial = &s;
+  p.spec = spec();
+  p.segments = 64;
+  p.max_iterations = 1;
+  p.measured = scans(s, 0.7, 1.6, {1000, 2000});
+  p.jobs = 1;
+  const CalibrationResult a = calibrate(p);
+  p.jobs = 2;
+  const CalibrationResult b = calibrate(p);
+  REQUIRE(a.params.size() == 2);
+  CHECK(b.params == a.params);
+  CHECK(b.covariance_log == a.covariance_log);
+  CHECK(b.rms_per_snapshot_m == a.rms_per_snapshot_m);
+  CHECK(b.forecasts == a.forecasts);
+  CHECK(b.iterations == a.iterations);
+  CHECK(a.params[0] != a.params[1]);  // the two columns differ: a mixed-up column would show
+  ForecastInput in;
+  in.initial = &s;
+  const LifeQuantiles qa = life_quantiles(a.params, a.covariance_log, p.make_provider, in, spec(), 1);
+  const LifeQuantiles qb = life_quantiles(a.params, a.covariance_log, p.make_provider, in, spec(), 3);
+  CHECK(qb.p50_h == qa.p50_h);
+  CHECK(qb.sigma_ln == qa.sigma_ln);
+  CHECK(qb.criterion == qa.criterion);
+  CHECK(qb.forecasts == 3);
+  CHECK(qa.sigma_ln > 0);
+}
+
+TEST_CASE("parallel_for calls every index once and reports the lowest failure", "[forecast][parallel]") {
+  for (const int jobs : {1, 2, 4}) {
+    std::vector<std::atomic<int>> calls(50);
+    parallel_for(50, jobs, [&](int i) { ++calls[static_cast<size_t>(i)]; });
+    for (const auto& c : calls) CHECK(c.load() == 1);
+    // failures at 7 and 30: the one at 7 is reported, and every index below
+    // it has been called (a loop one after the other stops at 7)
+    std::vector<std::atomic<int>> seen(50);
+    try {
+      parallel_for(50, jobs, [&](int i) {
+        ++seen[static_cast<size_t>(i)];
+        if (i == 7 || i == 30) throw std::runtime_error("case " + std::to_string(i));
+      });
+      FAIL("no exception");
+    } catch (const std::runtime_error& e) {
+      CHECK(std::string(e.what()) == "case 7");
+    }
+    for (int i = 0; i <= 7; ++i) CHECK(seen[static_cast<size_t>(i)].load() == 1);
+  }
+  CHECK(default_jobs(3, true) == 1);
+  CHECK(default_jobs(1, false) == 1);
+  CHECK(default_jobs(1000, false) >= 1);
 }
 
 TEST_CASE("bad measured profile files are refused naming the line", "[forecast][calibrate][input]") {

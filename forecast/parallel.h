@@ -1,0 +1,22 @@
+// parallel.h - independent forecasts at once (the cases of `linerlife
+// compare`, the finite differences of a calibration), each on one thread.
+// Every forecast owns its state (its rate provider, its CVODE context), so
+// running them at once gives the results of running them one after the other.
+#pragma once
+
+#include <functional>
+
+namespace linerlife {
+
+/// Calls f(i) for i = 0 .. n - 1 on up to `jobs` threads, each taking the
+/// next i in order (jobs <= 1: in this thread, in order). After an exception
+/// no new i starts; once the calls under way have ended, the exception of the
+/// lowest i is rethrown: every i below it has been called, so it is the one a
+/// loop one after the other would throw.
+void parallel_for(int n, int jobs, const std::function<void(int)>& f);
+
+/// Forecasts at once by default: one per core, at most n; one if `exclusive`
+/// (a charge model that spreads its own work over the cores: the DEM).
+int default_jobs(int n, bool exclusive);
+
+}  // namespace linerlife
