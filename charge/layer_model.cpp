@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <numeric>
@@ -42,6 +44,18 @@ inline double fast_floor(double x) {
 inline double wrap2pi(double a) {
   if (a >= 0 && a < kTwoPi) return a;
   return a - kTwoPi * fast_floor(a * kInvTwoPi);
+}
+
+/// std::nextafter(x, +inf) without the libm call: the next
+/// representable double above x (one step of the bit pattern).
+inline double next_up(double x) {
+  if (!(x < std::numeric_limits<double>::infinity())) return x;  // +inf, NaN
+  if (x == 0) return std::numeric_limits<double>::denorm_min();
+  std::uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  b += x > 0 ? 1 : -1;  // two's complement: -1 on the magnitude of a negative x
+  std::memcpy(&x, &b, sizeof x);
+  return x;
 }
 
 /// atan2 to about 1e-5 rad (enough to find bins and slots; polynomial of
@@ -223,6 +237,11 @@ class LayerSim {
   bool liner_crossing(const V& pa, const V& va, const V& acc, double tau, double tb, double& t_hit, int& bin) const;
   /// The point q (radius r, angle theta) lies in an occupied cell at time tq.
   bool inside_charge(const V& q, double r, double theta, double tq) const;
+  /// The same, the angle of q computed only where it matters (not inside the
+  /// innermost open layer, where the flights spend much of their time).
+  bool inside_charge(const V& q, double r, double tq) const {
+    return r >= r_open_min_ && inside_charge(q, r, fast_atan2(q.y(), q.x()), tq);
+  }
   void drag_advance(Flight& f, double h) const;
   void deposit(int id, double theta, double tau, const V& v_land);
   /// Puts element `id`, which is in no slot, at (k, s) at time tau and lets
@@ -990,7 +1009,7 @@ bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
   const V acc(0, -kGravity);
   double tau = f.t_next;
   V pa = flight_position(f, tau), va = flight_velocity(f, tau);
-  double ra = pa.norm(), tha = fast_atan2(pa.y(), pa.x());
+  double ra = pa.norm();
   while (tau < t1) {
     const double spv = std::sqrt(va.squaredNorm());
     // Clear of the liner and of the charge: jump by the time needed to cover
@@ -998,7 +1017,7 @@ bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
     // The clearance to the liner and to the innermost open layer holds at
     // any time; the one from the column map only for skip_H_ after it.
     const double d_liner = r_ride_min - ra;
-    const double d_bed = ra < r_open_min_ ? r_open_min_ - ra : bed_clearance(ra, tha, tau);
+    const double d_bed = ra < r_open_min_ ? r_open_min_ - ra : bed_clearance(ra, fast_atan2(pa.y(), pa.x()), tau);
     const double dist = std::min(d_liner, d_bed);
     if (dist > sample_len) {
       const double sp = std::max(spv, 1e-3);
@@ -1009,7 +1028,6 @@ bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
       pa = flight_position(f, tau);
       va = flight_velocity(f, tau);
       ra = pa.norm();
-      tha = fast_atan2(pa.y(), pa.x());
       continue;
     }
     // near something: check an interval of half a diameter, relative to the
@@ -1018,16 +1036,16 @@ bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
     const double vrel = std::sqrt(vx * vx + vy * vy);
     const double tb = tau + sample_len / std::max({spv, vrel, 1e-3});
     const V pb = flight_position(f, tb);
-    const double rb = pb.norm(), thb = fast_atan2(pb.y(), pb.x());
+    const double rb = pb.norm();
     double t_hit = kInf;
     int bin = -1;
     if (rb >= r_ride_min || ra >= r_ride_min) liner_crossing(pa, va, acc, tau, tb, t_hit, bin);
-    if (tb > f.grace && inside_charge(pb, rb, thb, tb)) {  // ends in an occupied cell: bisect for the entry
+    if (tb > f.grace && inside_charge(pb, rb, tb)) {  // ends in an occupied cell: bisect for the entry
       double lo = std::max(tau, f.grace), hi = tb;
       for (int it = 0; it < 6; ++it) {
         const double mid = 0.5 * (lo + hi);
         const V q = flight_position(f, mid);
-        if (inside_charge(q, q.norm(), fast_atan2(q.y(), q.x()), mid)) hi = mid;
+        if (inside_charge(q, q.norm(), mid)) hi = mid;
         else lo = mid;
       }
       if (lo < t_hit) t_hit = lo, bin = -1;
@@ -1048,7 +1066,6 @@ bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
     pa = pb;
     va = flight_velocity(f, tb);
     ra = rb;
-    tha = thb;
     if (tau - f.t_rel > 60.0 * kTwoPi / omega_)
       throw SimulationError(fmt::format("layer model: element {} has been in flight for {:.1f} s without landing", f.id, tau - f.t_rel));
   }
@@ -1091,12 +1108,12 @@ bool LayerSim::check_flight_drag(Flight& f, double t1, Landing& out) {
     double t_hit = kInf;
     int bin = -1;
     if (rb >= r_ride_min || ra >= r_ride_min) liner_crossing(pa, va, acc, tau, tb, t_hit, bin);
-    if (inside_charge(pb, rb, fast_atan2(pb.y(), pb.x()), tb)) {
+    if (inside_charge(pb, rb, tb)) {
       double lo = tau, hi = tb;
       for (int it = 0; it < 6; ++it) {
         const double mid = 0.5 * (lo + hi), tm = mid - tau;
         const V q = pa + va * tm + 0.5 * acc * tm * tm;
-        if (inside_charge(q, q.norm(), fast_atan2(q.y(), q.x()), mid)) hi = mid;
+        if (inside_charge(q, q.norm(), mid)) hi = mid;
         else lo = mid;
       }
       if (lo < t_hit) t_hit = lo, bin = -1;
@@ -1159,7 +1176,7 @@ void LayerSim::check_flights(double t1) {
       double t_lim = events_.empty() ? t1 : std::min(t1, events_.front().t);
       // at least one interval: check_flight() walks whole intervals, but
       // check_flight_drag() ends one at t_lim, so it gets one drag step (1 ms)
-      t_lim = std::max(t_lim, drag_on_ ? next_check(f) + 1e-3 : std::nextafter(next_check(f), kInf));
+      t_lim = std::max(t_lim, drag_on_ ? next_check(f) + 1e-3 : next_up(next_check(f)));
       Landing l;
       if (check_flight(f, t_lim, l) && !f.landed) {  // check_flight_drag() reports its landing in `l` only
         f.landing = l;
@@ -1530,7 +1547,7 @@ bool LayerSim::relax_candidate(int s, double tau) const {
   // (the point below in an empty cell), evaluated exactly as there.
   if (k > 0 && (h_min < h || (stp > 0.3 && h < n_open_))) {
     const V q(x, y - d_);
-    if (!inside_charge(q, q.norm(), fast_atan2(q.y(), q.x()), tau)) return true;
+    if (!inside_charge(q, q.norm(), tau)) return true;
   }
   if (ct >= 0) return false;  // the rising side: no repose rule
   // the toe side, repose: the lowest and nearest a neighbouring free cell
