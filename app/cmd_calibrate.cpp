@@ -20,7 +20,6 @@
 #include "app/results.h"
 #include "forecast/calibrate.h"
 #include "forecast/measured_history.h"
-#include "forecast/parallel.h"
 #include "geometry/build_liner_surface.h"
 #include "geometry/errors.h"
 
@@ -33,7 +32,7 @@ struct CalibrateOptions {
   std::string fit = "abrasion,impact";
   bool json = false;
   std::string out;
-  int jobs = 0;  // forecasts at once (the finite differences); 0: default_jobs()
+  int jobs = 0;  // forecasts at once (the finite differences); 0: forecast_jobs()
 };
 
 /// Which calibration factors each fitted parameter scales.
@@ -72,11 +71,8 @@ int run_calibrate(const CalibrateOptions& o) {
   const MeasuredHistory h = load_measured_history(o.measured);
   validate_measured_history(h, c.mill.shell_radius_m(), c.liner.segments);
   const std::vector<Param> ps = parse_fit(o.fit);
-  if (o.jobs < 0)
-    throw InputError("--jobs", fmt::format("--jobs {}: allowed 1 <= value (forecasts at once; absent or 0: one per "
-                                           "core, one at a time with the DEM)", o.jobs));
   // the finite differences: one forecast per parameter, and one more for the life's spread
-  const int jobs = o.jobs > 0 ? o.jobs : default_jobs(static_cast<int>(ps.size()) + 1, c.model.charge == "dem");
+  const int jobs = forecast_jobs(o.jobs, static_cast<int>(ps.size()) + 1, c.model.charge == "dem");
   if (!o.out.empty()) check_output_dir_writable(o.out);
 
   ForecastSetup setup = make_forecast_setup(c);  // checks the models at setup

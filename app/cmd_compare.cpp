@@ -30,7 +30,7 @@ struct CompareOptions {
   std::string method;
   bool json = false;
   std::string out;
-  int jobs = 0;  // forecasts at once; 0: default_jobs()
+  int jobs = 0;  // forecasts at once; 0: forecast_jobs()
 };
 
 struct Case {
@@ -91,9 +91,10 @@ int run_compare(const CompareOptions& o) {
       throw InputError("compare", "compare needs two or more configurations, or one with --vary KEY=v1,v2,...");
     for (const auto& p : o.configs) cases.push_back({p, load_config_file(p), {}});
   }
-  if (o.jobs < 0)
-    throw InputError("--jobs", fmt::format("--jobs {}: allowed 1 <= value (forecasts at once; absent or 0: one per "
-                                           "core, one at a time with the DEM)", o.jobs));
+  bool dem = false;
+  for (const Case& k : cases) dem = dem || k.config.model.charge == "dem";
+  const int n = static_cast<int>(cases.size());
+  const int jobs = forecast_jobs(o.jobs, n, dem);
   if (!o.out.empty()) check_output_dir_writable(o.out);
   // set every case up before running any, so a bad one is refused at once
   std::vector<ForecastSetup> setups;
@@ -108,13 +109,11 @@ int run_compare(const CompareOptions& o) {
       throw in_case(k, e);
     }
   }
-  // The forecasts, --jobs at once (forecast/parallel.h: a failure stops new
-  // cases, and the lowest failing case is reported, as one after the other).
-  bool dem = false;
-  for (const Case& k : cases) dem = dem || k.config.model.charge == "dem";
-  const int n = static_cast<int>(cases.size());
+  // The forecasts, `jobs` at once (forecast/parallel.h: no case after a
+  // failing one starts, and the lowest failing case is reported, as one after
+  // the other).
   std::mutex progress;
-  parallel_for(n, o.jobs > 0 ? o.jobs : default_jobs(n, dem), [&](int i) {
+  parallel_for(n, jobs, [&](int i) {
     Case& k = cases[static_cast<size_t>(i)];
     if (!o.json) {
       const std::lock_guard<std::mutex> lock(progress);

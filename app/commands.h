@@ -50,6 +50,13 @@ InputError located(const Config& c, const InputError& e);
 /// A --revolutions option's value: refused (InputError) unless 0 < n <= 1e4.
 double checked_revolutions(double n);
 
+/// How many of `n` independent forecasts (compare's cases, calibrate's finite
+/// differences) run at once: --jobs `requested` (refused below 0), or with 0
+/// one per available core, one at a time with the DEM (`dem`), whose every
+/// forecast spreads its contacts over all the cores; an explicit count with
+/// the DEM is kept, with a note that the forecasts share the cores.
+int forecast_jobs(int requested, int n, bool dem);
+
 /// The charge model's notes gathered over `drives` drives (a forecast's, a
 /// wear run's), one line each on stderr: "linerlife: note: in N of M charge
 /// drives (first in drive K): TEXT".

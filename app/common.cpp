@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "forecast/forecast.h"
+#include "forecast/parallel.h"
 
 namespace linerlife {
 
@@ -19,6 +20,19 @@ Config load_config_or_default(const std::string& path) {
 void note(const std::string& text) { std::cerr << text << "\n"; }
 
 void rethrow_located(const Config& c, const InputError& e) { throw located(c, e); }
+
+int forecast_jobs(int requested, int n, bool dem) {
+  if (requested < 0)
+    throw InputError("--jobs", fmt::format("--jobs {}: allowed 1 <= value (forecasts at once; absent or 0: one per "
+                                           "core, one at a time with the DEM)", requested));
+  if (requested == 0) return default_jobs(n, dem);
+  const int jobs = std::min(requested, std::max(1, n));
+  if (dem && jobs > 1)
+    note(fmt::format("linerlife: note: --jobs {}: {} DEM forecasts at once, each spreading its contacts over the {} "
+                     "cores: they share them (without --jobs the DEM's forecasts run one at a time)",
+                     requested, jobs, available_cores()));
+  return jobs;
+}
 
 double checked_revolutions(double n) {
   if (!(std::isfinite(n) && n > 0 && n <= 1e4))

@@ -1,9 +1,11 @@
 // Calibration against measured profiles: recovery of known coefficients from
 // synthetic scans, and refusal of bad measurement files.
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -179,19 +181,22 @@ TEST_CASE("parallel_for calls every index once and reports the lowest failure", 
     std::vector<std::atomic<int>> calls(50);
     parallel_for(50, jobs, [&](int i) { ++calls[static_cast<size_t>(i)]; });
     for (const auto& c : calls) CHECK(c.load() == 1);
-    // failures at 7 and 30: the one at 7 is reported, and every index below
-    // it has been called (a loop one after the other stops at 7)
+    // failures at 7 and 8, the one at 8 first in time (on two or more
+    // threads): the one at 7 is reported, and every index below it has been
+    // called (a loop one after the other stops at 7)
     std::vector<std::atomic<int>> seen(50);
     try {
       parallel_for(50, jobs, [&](int i) {
         ++seen[static_cast<size_t>(i)];
-        if (i == 7 || i == 30) throw std::runtime_error("case " + std::to_string(i));
+        if (i == 7) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        if (i == 7 || i == 8) throw std::runtime_error("case " + std::to_string(i));
       });
       FAIL("no exception");
     } catch (const std::runtime_error& e) {
       CHECK(std::string(e.what()) == "case 7");
     }
     for (int i = 0; i <= 7; ++i) CHECK(seen[static_cast<size_t>(i)].load() == 1);
+    if (jobs == 1) CHECK(seen[8].load() == 0);  // in order: nothing after the failure
   }
   CHECK(default_jobs(3, true) == 1);
   CHECK(default_jobs(1, false) == 1);
