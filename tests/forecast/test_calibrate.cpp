@@ -93,6 +93,19 @@ MeasuredHistory scans(const LinerSurface& s, double ka, double ki, const std::ve
   return h;
 }
 
+/// The two-factor fit (abrasion, impact of TwoPartRates) on surface s,
+/// without its scans.
+CalibrationProblem two_factor_problem(const LinerSurface& s) {
+  CalibrationProblem p;
+  p.names = {"abrasion", "impact"};
+  p.initial = {1.0, 1.0};
+  p.make_provider = [](const std::vector<double>& k) { return std::make_unique<TwoPartRates>(k[0], k[1]); };
+  p.input.initial = &s;
+  p.spec = spec();
+  p.segments = 64;
+  return p;
+}
+
 }  // namespace
 
 TEST_CASE("calibrate recovers a known wear coefficient from synthetic profiles", "[forecast][calibrate]") {
@@ -115,13 +128,7 @@ TEST_CASE("calibrate recovers a known wear coefficient from synthetic profiles",
 
 TEST_CASE("calibrate separates two coefficients and gives a life spread", "[forecast][calibrate][slow]") {
   const LinerSurface s = build_liner_surface(qiu(), liner());
-  CalibrationProblem p;
-  p.names = {"abrasion", "impact"};
-  p.initial = {1.0, 1.0};
-  p.make_provider = [](const std::vector<double>& k) { return std::make_unique<TwoPartRates>(k[0], k[1]); };
-  p.input.initial = &s;
-  p.spec = spec();
-  p.segments = 64;
+  CalibrationProblem p = two_factor_problem(s);
   p.measured = scans(s, 0.7, 1.6, {1500, 3000, 4500});
   const CalibrationResult r = calibrate(p);
   INFO("fitted " << r.params[0] << ", " << r.params[1]);
@@ -145,13 +152,7 @@ TEST_CASE("the finite differences of a calibration run at once with the results 
   // threads must not change a bit of the fit (one iteration is enough to
   // compare, not to converge).
   const LinerSurface s = build_liner_surface(qiu(), liner());
-  CalibrationProblem p;
-  p.names = {"abrasion", "impact"};
-  p.initial = {1.0, 1.0};
-  p.make_provider = [](const std::vector<double>& k) { return std::make_unique<TwoPartRates>(k[0], k[1]); };
-  p.input.initial = &s;
-  p.spec = spec();
-  p.segments = 64;
+  CalibrationProblem p = two_factor_problem(s);
   p.max_iterations = 1;
   p.measured = scans(s, 0.7, 1.6, {1000, 2000});
   p.jobs = 1;
