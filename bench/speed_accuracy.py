@@ -148,6 +148,23 @@ FORECASTS = [
 ]
 
 
+def forecast_rows(cache, labels, ncols, dem_label="dem, 2 revolutions, 8 mm"):
+    """(label, result, life against the DEM forecast) of each cached forecast
+    of `labels`; a failed one is printed as a table row of ncols columns."""
+    dem = cache.get(f"forecast/{dem_label}", {})
+    for label in labels:
+        r = cache.get(f"forecast/{label}")
+        if not r:
+            continue
+        if "error" in r:
+            print(f"| {label} | failed (exit {r['exit']}) after {r['wall_s']:.0f} s: {r['error'][:100]} |"
+                  + " |" * (ncols - 2))
+            continue
+        rel = (f"{100 * (r['operating_hours'] / dem['operating_hours'] - 1):+.1f} %"
+               if dem and "error" not in dem else "-")
+        yield label, r, rel
+
+
 def run_forecasts(cache, out_dir, linerlife):
     import time
     base = open(os.path.join(ROOT, "data/mills/qiu2001_sag.toml")).read()
@@ -193,16 +210,7 @@ def run_forecasts(cache, out_dir, linerlife):
     print("\n### Relining time (Qiu mill, whole-life forecast)\n")
     print("| charge model | relining [h] | criterion | charge drives | wall [s] | vs the DEM forecast |")
     print("|---|---|---|---|---|---|")
-    dem = cache.get("forecast/dem, 2 revolutions, 8 mm", {})
-    for label, _ in FORECASTS:
-        r = cache.get(f"forecast/{label}")
-        if not r:
-            continue
-        if "error" in r:
-            print(f"| {label} | failed (exit {r['exit']}) after {r['wall_s']:.0f} s: {r['error'][:100]} | | | | |")
-            continue
-        rel = (f"{100 * (r['operating_hours'] / dem['operating_hours'] - 1):+.1f} %"
-               if dem and "error" not in dem else "-")
+    for label, r, rel in forecast_rows(cache, [label for label, _ in FORECASTS], 6):
         print(f"| {label} | {r['operating_hours']:.0f} | {r['criterion']} | {r['charge_redrives']} | "
               f"{r['wall_s']:.0f} | {rel} |")
 
