@@ -75,7 +75,7 @@ int run_calibrate(const CalibrateOptions& o) {
   const int jobs = forecast_jobs(o.jobs, static_cast<int>(ps.size()) + 1, c.model.charge == "dem");
   if (!o.out.empty()) check_output_dir_writable(o.out);
 
-  ForecastSetup setup = make_forecast_setup(c);  // checks the models at setup
+  ForecastSetup setup = make_forecast_setup(c, true);  // checks the models at setup (the factors are fitted)
   CalibrationProblem p;
   for (const Param& q : ps) p.names.push_back(q.name);
   p.initial.assign(ps.size(), 1.0);

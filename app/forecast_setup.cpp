@@ -25,17 +25,36 @@ std::unique_ptr<RateProvider> make_scaled_provider(const Config& c, double kc, d
   return std::make_unique<ChargeWearRate>(c.mill, c.charge, c.model, entry, std::move(wear), c.material, 1);
 }
 
-bool warn_wear_loads(const Config& c) {
-  if (c.model.charge != "dem" || !(c.model.dem.coarse_grain > 1)) return false;
-  std::cerr << fmt::format(
-      "linerlife: warning: [dem] coarse_grain = {} changes the DEM's wear rate (by -11 to +40 % at s = 1.3 on "
-      "the pilot mills, within 5 % on the Qiu mill up to s = 1.8: docs/validation/speed-accuracy.md); check it "
-      "against coarse_grain = 1 before trusting the wear\n",
-      c.model.dem.coarse_grain);
-  return true;
+bool warn_wear_loads(const Config& c, bool fitting_calibration) {
+  if (c.model.charge != "dem") return false;
+  bool warned = false;
+  if (c.model.dem.coarse_grain > 1) {
+    std::cerr << fmt::format(
+        "linerlife: warning: [dem] coarse_grain = {} changes the DEM's wear rate (by -11 to +40 % at s = 1.3 on "
+        "the pilot mills, within 5 % on the Qiu mill up to s = 1.8: docs/validation/speed-accuracy.md); check it "
+        "against coarse_grain = 1 before trusting the wear\n",
+        c.model.dem.coarse_grain);
+    warned = true;
+  }
+  // The default wear constants are the thesis', used with its layer model;
+  // the DEM's loads wear the new liner 7.4 (Qiu) and 9.4 (the example ball
+  // mill) times as fast with them (docs/validation/speed-accuracy.md,
+  // "Relining time"; docs/validation/ball-mill.md). calibrate fits the factors.
+  const WearSpec& w = c.wear;
+  if (!fitting_calibration && w.calibration_centrifugal == 1 && w.calibration_gravitational == 1 &&
+      w.calibration_impact == 1) {
+    std::cerr << "linerlife: warning: the DEM drives the wear with [wear] calibration factors of 1, and the default "
+                 "wear constants are the thesis', used with its layer model: with them the DEM's new-liner mass-loss "
+                 "rate is 7.4 times the layer model's on the bundled Qiu mill and 9.4 times on the example ball mill "
+                 "(docs/validation/speed-accuracy.md, docs/validation/ball-mill.md), and its life several times "
+                 "shorter; calibrate the DEM's wear to measured profiles (linerlife calibrate) or scale "
+                 "calibration_centrifugal, calibration_gravitational and calibration_impact\n";
+    warned = true;
+  }
+  return warned;
 }
 
-ForecastSetup make_forecast_setup(const Config& c) {
+ForecastSetup make_forecast_setup(const Config& c, bool fitting_calibration) {
   // A coarse-grained DEM needs its largest disc under the lifter
   // (docs/models/dem.md §3); the forecast wears the lifter down to
   // min_lifter_height_m, and the DEM would refuse a drive part-way through.
@@ -53,7 +72,7 @@ ForecastSetup make_forecast_setup(const Config& c) {
                                    config_location(c, "dem.coarse_grain"), s, s * dmax, h_end,
                                    std::max(1.0, std::floor(h_end / dmax * 1000) / 1000)));
   }
-  warn_wear_loads(c);
+  warn_wear_loads(c, fitting_calibration);
   ForecastSetup s;
   s.surface = std::make_shared<LinerSurface>(build_liner_surface(c.mill, c.liner));
   s.input.initial = s.surface.get();

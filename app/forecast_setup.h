@@ -21,14 +21,18 @@ struct ForecastSetup {
 /// Throws InputError for a charge model that is not available, an
 /// incompatible wear law, a liner material out of range, or a DEM coarse
 /// enough that its discs would not fit under the lifter the forecast wears
-/// down to (naming the key). Prints warn_wear_loads()'s caveat.
-ForecastSetup make_forecast_setup(const Config& c);
+/// down to (naming the key). Prints warn_wear_loads()'s caveats
+/// (`fitting_calibration`: for calibrate, which fits the factors).
+ForecastSetup make_forecast_setup(const Config& c, bool fitting_calibration = false);
 
 /// Prints a warning to stderr when the configuration's charge model gives
 /// wear loads that may be off: the DEM with coarse_grain > 1 (its wear rate
 /// came out -11 to +40 % of the media-size run's on the pilot mills,
-/// docs/validation/speed-accuracy.md). Returns whether it warned.
-bool warn_wear_loads(const Config& c);
+/// docs/validation/speed-accuracy.md), and the DEM with the wear calibration
+/// factors all 1 unless `fitting_calibration` (the default constants are the
+/// thesis', used with its layer model; with them the DEM wears 7.4-9.4 times
+/// as fast, docs/validation/ball-mill.md). Returns whether it warned.
+bool warn_wear_loads(const Config& c, bool fitting_calibration = false);
 
 /// A provider for the configuration with its wear calibration factors scaled
 /// (centrifugal, gravitational, impact): the parameters `calibrate` fits.
