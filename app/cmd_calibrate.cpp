@@ -75,7 +75,10 @@ int run_calibrate(const CalibrateOptions& o) {
   const int jobs = forecast_jobs(o.jobs, static_cast<int>(ps.size()) + 1, c.model.charge == "dem");
   if (!o.out.empty()) check_output_dir_writable(o.out);
 
-  ForecastSetup setup = make_forecast_setup(c, true);  // checks the models at setup (the factors are fitted)
+  std::array<bool, 3> fit_factors{false, false, false};  // centrifugal, gravitational, impact
+  for (const Param& q : ps)
+    fit_factors = {fit_factors[0] || q.centrifugal, fit_factors[1] || q.gravitational, fit_factors[2] || q.impact};
+  ForecastSetup setup = make_forecast_setup(c, fit_factors);  // checks the models at setup
   CalibrationProblem p;
   for (const Param& q : ps) p.names.push_back(q.name);
   p.initial.assign(ps.size(), 1.0);

@@ -1,6 +1,9 @@
 #include "app/forecast_setup.h"
 
 #include <algorithm>
+#include <array>
+#include <string>
+#include <utility>
 #include <cmath>
 #include <iostream>
 
@@ -25,7 +28,7 @@ std::unique_ptr<RateProvider> make_scaled_provider(const Config& c, double kc, d
   return std::make_unique<ChargeWearRate>(c.mill, c.charge, c.model, entry, std::move(wear), c.material, 1);
 }
 
-bool warn_wear_loads(const Config& c, bool fitting_calibration) {
+bool warn_wear_loads(const Config& c, const std::array<bool, 3>& fitted) {
   if (c.model.charge != "dem") return false;
   bool warned = false;
   if (c.model.dem.coarse_grain > 1) {
@@ -39,22 +42,29 @@ bool warn_wear_loads(const Config& c, bool fitting_calibration) {
   // The default wear constants are the thesis', used with its layer model;
   // the DEM's loads wear the new liner 7.4 (Qiu) and 9.4 (the example ball
   // mill) times as fast with them (docs/validation/speed-accuracy.md,
-  // "Relining time"; docs/validation/ball-mill.md). calibrate fits the factors.
+  // "Relining time"; docs/validation/ball-mill.md). A factor left at 1 that
+  // the run does not fit (calibrate fits its --fit factors) is uncalibrated.
   const WearSpec& w = c.wear;
-  if (!fitting_calibration && w.calibration_centrifugal == 1 && w.calibration_gravitational == 1 &&
-      w.calibration_impact == 1) {
-    std::cerr << "linerlife: warning: the DEM drives the wear with [wear] calibration factors of 1, and the default "
-                 "wear constants are the thesis', used with its layer model: with them the DEM's new-liner mass-loss "
-                 "rate is 7.4 times the layer model's on the bundled Qiu mill and 9.4 times on the example ball mill "
-                 "(docs/validation/speed-accuracy.md, docs/validation/ball-mill.md), and its life several times "
-                 "shorter; calibrate the DEM's wear to measured profiles (linerlife calibrate) or scale "
-                 "calibration_centrifugal, calibration_gravitational and calibration_impact\n";
+  const std::array<std::pair<const char*, double>, 3> factors = {{{"calibration_centrifugal", w.calibration_centrifugal},
+                                                                  {"calibration_gravitational", w.calibration_gravitational},
+                                                                  {"calibration_impact", w.calibration_impact}}};
+  std::string at_one;
+  for (size_t i = 0; i < factors.size(); ++i)
+    if (!fitted[i] && factors[i].second == 1) at_one += (at_one.empty() ? "" : ", ") + std::string(factors[i].first);
+  if (!at_one.empty()) {
+    std::cerr << fmt::format(
+        "linerlife: warning: the DEM drives the wear with [wear] {} = 1, and the default wear constants are the "
+        "thesis', used with its layer model: with them the DEM's new-liner mass-loss rate is 7.4 times the layer "
+        "model's on the bundled Qiu mill and 9.4 times on the example ball mill (docs/validation/speed-accuracy.md, "
+        "docs/validation/ball-mill.md), and its life several times shorter; calibrate the DEM's wear to measured "
+        "profiles (linerlife calibrate) or scale the calibration factors\n",
+        at_one);
     warned = true;
   }
   return warned;
 }
 
-ForecastSetup make_forecast_setup(const Config& c, bool fitting_calibration) {
+ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fitted) {
   // A coarse-grained DEM needs its largest disc under the lifter
   // (docs/models/dem.md §3); the forecast wears the lifter down to
   // min_lifter_height_m, and the DEM would refuse a drive part-way through.
@@ -72,7 +82,7 @@ ForecastSetup make_forecast_setup(const Config& c, bool fitting_calibration) {
                                    config_location(c, "dem.coarse_grain"), s, s * dmax, h_end,
                                    std::max(1.0, std::floor(h_end / dmax * 1000) / 1000)));
   }
-  warn_wear_loads(c, fitting_calibration);
+  warn_wear_loads(c, fitted);
   ForecastSetup s;
   s.surface = std::make_shared<LinerSurface>(build_liner_surface(c.mill, c.liner));
   s.input.initial = s.surface.get();

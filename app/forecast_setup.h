@@ -4,6 +4,7 @@
 // calibrate.
 #pragma once
 
+#include <array>
 #include <memory>
 
 #include "app/config.h"
@@ -21,18 +22,19 @@ struct ForecastSetup {
 /// Throws InputError for a charge model that is not available, an
 /// incompatible wear law, a liner material out of range, or a DEM coarse
 /// enough that its discs would not fit under the lifter the forecast wears
-/// down to (naming the key). Prints warn_wear_loads()'s caveats
-/// (`fitting_calibration`: for calibrate, which fits the factors).
-ForecastSetup make_forecast_setup(const Config& c, bool fitting_calibration = false);
+/// down to (naming the key). Prints warn_wear_loads()'s caveats; `fitted`:
+/// the calibration factors the run fits (calibrate's --fit).
+ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fitted = {false, false, false});
 
 /// Prints a warning to stderr when the configuration's charge model gives
 /// wear loads that may be off: the DEM with coarse_grain > 1 (its wear rate
 /// came out -11 to +40 % of the media-size run's on the pilot mills,
-/// docs/validation/speed-accuracy.md), and the DEM with the wear calibration
-/// factors all 1 unless `fitting_calibration` (the default constants are the
-/// thesis', used with its layer model; with them the DEM wears 7.4-9.4 times
-/// as fast, docs/validation/ball-mill.md). Returns whether it warned.
-bool warn_wear_loads(const Config& c, bool fitting_calibration = false);
+/// docs/validation/speed-accuracy.md), and the DEM with a wear calibration
+/// factor (centrifugal, gravitational, impact) left at 1 that the run does
+/// not fit (`fitted`): the default constants are the thesis', used with its
+/// layer model, and with them the DEM wears 7.4-9.4 times as fast
+/// (docs/validation/ball-mill.md). Returns whether it warned.
+bool warn_wear_loads(const Config& c, const std::array<bool, 3>& fitted = {false, false, false});
 
 /// A provider for the configuration with its wear calibration factors scaled
 /// (centrifugal, gravitational, impact): the parameters `calibrate` fits.

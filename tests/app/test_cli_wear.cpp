@@ -6,6 +6,8 @@
 #include <fstream>
 #include <regex>
 
+#include "app/config.h"
+#include "app/forecast_setup.h"
 #include "charge/charge_model.h"
 #include "cli_runner.h"
 #include "wear/wear_laws.h"
@@ -170,8 +172,9 @@ TEST_CASE("wear: a coarse-grained DEM warns that its wear loads may be off", "[a
 
 // docs/validation/ball-mill.md: with the default wear constants (the thesis',
 // used with its layer model) the DEM wears the new liner 7.4-9.4 times as
-// fast as the layer model, so a DEM wear run or forecast whose calibration
-// factors are all 1 says so; one with a factor set, or the layer model, does not.
+// fast as the layer model, so a DEM wear run or forecast with a calibration
+// factor left at 1 says which; one with all three set, or the layer model,
+// does not.
 TEST_CASE("the DEM with uncalibrated wear constants warns that its wear comes out several times faster",
           "[app][cli][wear][dem]") {
   if (!has_model("dem")) return;
@@ -181,19 +184,38 @@ TEST_CASE("the DEM with uncalibrated wear constants warns that its wear comes ou
   const std::string dem = std::regex_replace(text, std::regex("charge = \"layer\"\n"), "charge = \"dem\"\n") +
                           "\n[dem]\nthreads = 1\nsettle_revolutions = 0.2\n";
   struct Case {
-    std::string config;
-    bool warns;
+    std::string config, at_one;  // the factors the warning names ("": none)
   };
-  for (const Case& k : {Case{dem, true}, Case{dem + "\n[wear]\ncalibration_impact = 0.5\n", false},
-                        Case{text, false}}) {
+  const std::string all3 = "calibration_centrifugal, calibration_gravitational, calibration_impact";
+  for (const Case& k : {Case{dem, all3}, Case{dem + "\n[wear]\ncalibration_impact = 0.5\n",
+                                              "calibration_centrifugal, calibration_gravitational"},
+                        Case{dem + "\n[wear]\ncalibration_impact = 0.5\ncalibration_centrifugal = 0.2\n"
+                                   "calibration_gravitational = 0.2\n", ""},
+                        Case{text, ""}}) {
     const fs::path cfg = dir / "pilot.toml";
     write_file(cfg, k.config);
     const RunResult r = run_linerlife("wear " + cfg.string() + " --json --revolutions 0.2", 120);
     INFO(k.config << "\n" << r.err);
     REQUIRE(r.code == 0);
-    const bool warned = r.err.find("calibration factors of 1") != std::string::npos;
-    CHECK(warned == k.warns);
-    if (warned) CHECK_THAT(r.err, Catch::Contains("ball-mill.md") && Catch::Contains("linerlife calibrate"));
+    if (k.at_one.empty()) {
+      CHECK_THAT(r.err, !Catch::Contains("calibration"));
+    } else {
+      CHECK_THAT(r.err, Catch::Contains("the DEM drives the wear with [wear] " + k.at_one + " = 1"));
+      CHECK_THAT(r.err, Catch::Contains("ball-mill.md") && Catch::Contains("linerlife calibrate"));
+    }
   }
   fs::remove_all(dir);
+}
+
+TEST_CASE("calibrate's fitted factors do not count as uncalibrated", "[app][wear][dem]") {
+  Config c = load_config_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/pilot_test_01.toml");
+  c.model.charge = "dem";
+  CHECK(warn_wear_loads(c));                       // all three at 1
+  CHECK(!warn_wear_loads(c, {true, true, true}));  // --fit all, or the three
+  CHECK(warn_wear_loads(c, {false, false, true})); // --fit impact: the abrasion factors stay at 1
+  CHECK(warn_wear_loads(c, {true, true, false}));  // --fit abrasion: the impact factor stays at 1
+  c.wear.calibration_impact = 0.3;
+  CHECK(!warn_wear_loads(c, {true, true, false}));
+  c.model.charge = "layer";
+  CHECK(!warn_wear_loads(c));
 }
