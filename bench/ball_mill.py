@@ -49,6 +49,9 @@ FORECASTS = [
                                          "forecast": {"revolutions_per_drive": "2", "refresh_tol_m": "0.008"}}, False),
     ("dem, 2 revolutions, 8 mm", DEM_DRIVE, True),
     ("dem, 2 revolutions, 8 mm, the thesis' constants", DEM_DRIVE, False),
+    # the DEM forecast's own convergence in the revolutions a drive
+    ("dem, 6 revolutions, 8 mm", {**DEM_DRIVE, "forecast": {"revolutions_per_drive": "6", "refresh_tol_m": "0.008"}},
+     True),
 ]
 
 
