@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <string>
-#include <utility>
 #include <cmath>
 #include <iostream>
+#include <string>
+#include <utility>
 
 #include <fmt/format.h>
 

@@ -3,7 +3,6 @@
 // a forecast of it ends on a relining criterion within a factor of three of
 // the published ball-mill liner life.
 #include <cmath>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -11,6 +10,7 @@
 
 #include "cli_runner.h"
 #include "tests/app/json_lite.h"
+#include "tests/oracle_csv.h"
 
 using namespace linerlife::test;
 namespace fs = std::filesystem;
@@ -22,17 +22,10 @@ const std::string kBallMill = std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/b
 /// Value of `output` for the grate-discharge Morrell row of `mill` in the
 /// worked power examples (reference/oracles, copied to tests/charge/oracles).
 double worked_example(const std::string& mill, const std::string& output) {
-  std::istringstream in(read_file(std::string(LINERLIFE_SOURCE_DIR) +
-                                  "/tests/charge/oracles/power_model_worked_examples.csv"));
-  std::string line;
-  while (std::getline(in, line)) {
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    for (std::string x; f.size() < 18 && std::getline(ss, x, ',');) f.push_back(x);
-    // case, model, D, L, Ld, rpm, phi, J, Jb, E, U, solids, rho_ore, rho_ball, discharge, extra, output, value
-    if (f.size() == 18 && f[0] == mill && f[1] == "Morrell_C_cyl_only" && f[14] == "grate" && f[16] == output)
+  // case, model, D, L, Ld, rpm, phi, J, Jb, E, U, solids, rho_ore, rho_ball, discharge, extra, output, value
+  for (const auto& f : read_csv(std::string(LINERLIFE_SOURCE_DIR) + "/tests/charge/oracles/power_model_worked_examples.csv"))
+    if (f.size() >= 18 && f[0] == mill && f[1] == "Morrell_C_cyl_only" && f[14] == "grate" && f[16] == output)
       return std::stod(f[17]);
-  }
   FAIL("no row " << mill << " / " << output << " in the worked examples");
   return 0;
 }

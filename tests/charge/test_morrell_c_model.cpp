@@ -12,33 +12,12 @@
 #include "charge/morrell_c_model.h"
 #include "geometry/errors.h"
 #include "geometry/mill.h"
+#include "tests/oracle_csv.h"
 
 using namespace linerlife;
+using linerlife::test::read_csv;
 
 namespace {
-
-/// CSV rows as string fields; quoted fields may hold commas.
-std::vector<std::vector<std::string>> read_csv(const std::string& path) {
-  std::ifstream f(path);
-  REQUIRE(f.good());
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  std::getline(f, line);  // header
-  while (std::getline(f, line)) {
-    if (line.empty()) continue;
-    std::vector<std::string> fields;
-    std::string cur;
-    bool quoted = false;
-    for (char c : line) {
-      if (c == '"') quoted = !quoted;
-      else if (c == ',' && !quoted) fields.push_back(cur), cur.clear();
-      else cur += c;
-    }
-    fields.push_back(cur);
-    rows.push_back(fields);
-  }
-  return rows;
-}
 
 constexpr double kDeg = 180.0 / kPi;
 
