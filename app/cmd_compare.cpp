@@ -104,10 +104,20 @@ int run_compare(const CompareOptions& o) {
                                  : o.method == "euler" ? ForecastMethod::Euler
                                                        : ForecastMethod::Ode;
     try {
-      setups.push_back(make_forecast_setup(k.config));
+      setups.push_back(make_forecast_setup(k.config, {false, false, false}, false));
     } catch (const InputError& e) {
       throw in_case(k, e);
     }
+  }
+  // the cases' warnings, each once with the cases it concerns
+  {
+    std::vector<std::string> labels;
+    std::vector<std::vector<std::string>> warnings;
+    for (size_t i = 0; i < cases.size(); ++i) {
+      labels.push_back(cases[i].label);
+      warnings.push_back(setups[i].warnings);
+    }
+    for (const std::string& line : case_warning_lines(labels, warnings)) std::cerr << line << "\n";
   }
   // The forecasts, `jobs` at once (forecast/parallel.h: no case after a
   // failing one starts, and the lowest failing case is reported, as one after

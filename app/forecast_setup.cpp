@@ -6,6 +6,7 @@
 #include <iostream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -28,17 +29,15 @@ std::unique_ptr<RateProvider> make_scaled_provider(const Config& c, double kc, d
   return std::make_unique<ChargeWearRate>(c.mill, c.charge, c.model, entry, std::move(wear), c.material, 1);
 }
 
-bool warn_wear_loads(const Config& c, const std::array<bool, 3>& fitted) {
-  if (c.model.charge != "dem") return false;
-  bool warned = false;
-  if (c.model.dem.coarse_grain > 1) {
-    std::cerr << fmt::format(
-        "linerlife: warning: [dem] coarse_grain = {} changes the DEM's wear rate (by -11 to +40 % at s = 1.3 on "
-        "the pilot mills, within 5 % on the Qiu mill up to s = 1.8: docs/validation/speed-accuracy.md); check it "
-        "against coarse_grain = 1 before trusting the wear\n",
-        c.model.dem.coarse_grain);
-    warned = true;
-  }
+std::vector<std::string> wear_load_warnings(const Config& c, const std::array<bool, 3>& fitted) {
+  std::vector<std::string> out;
+  if (c.model.charge != "dem") return out;
+  if (c.model.dem.coarse_grain > 1)
+    out.push_back(fmt::format(
+        "[dem] coarse_grain = {} changes the DEM's wear rate (by -11 to +40 % at s = 1.3 on the pilot mills, "
+        "within 5 % on the Qiu mill up to s = 1.8: docs/validation/speed-accuracy.md); check it against "
+        "coarse_grain = 1 before trusting the wear",
+        c.model.dem.coarse_grain));
   // The default wear constants are the thesis', used with its layer model;
   // the DEM's loads wear the new liner 7.4 (Qiu) and 9.4 (the example ball
   // mill) times as fast with them (docs/validation/speed-accuracy.md,
@@ -51,20 +50,51 @@ bool warn_wear_loads(const Config& c, const std::array<bool, 3>& fitted) {
   std::string at_one;
   for (size_t i = 0; i < factors.size(); ++i)
     if (!fitted[i] && factors[i].second == 1) at_one += (at_one.empty() ? "" : ", ") + std::string(factors[i].first);
-  if (!at_one.empty()) {
-    std::cerr << fmt::format(
-        "linerlife: warning: the DEM drives the wear with [wear] {} = 1, and the default wear constants are the "
-        "thesis', used with its layer model: with them the DEM's new-liner mass-loss rate is 7.4 times the layer "
-        "model's on the bundled Qiu mill and 9.4 times on the example ball mill (docs/validation/speed-accuracy.md, "
+  if (!at_one.empty())
+    out.push_back(fmt::format(
+        "the DEM drives the wear with [wear] {} = 1, and the default wear constants are the thesis', used with its "
+        "layer model: with them the DEM's new-liner mass-loss rate is 7.4 times the layer model's on the bundled Qiu "
+        "mill and 9.4 times on the example ball mill (docs/validation/speed-accuracy.md, "
         "docs/validation/ball-mill.md), and its life several times shorter; calibrate the DEM's wear to measured "
-        "profiles (linerlife calibrate) or scale the calibration factors\n",
-        at_one);
-    warned = true;
-  }
-  return warned;
+        "profiles (linerlife calibrate) or scale the calibration factors",
+        at_one));
+  return out;
 }
 
-ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fitted) {
+bool warn_wear_loads(const Config& c, const std::array<bool, 3>& fitted) {
+  const std::vector<std::string> w = wear_load_warnings(c, fitted);
+  for (const std::string& m : w) std::cerr << "linerlife: warning: " << m << "\n";
+  return !w.empty();
+}
+
+std::vector<std::string> case_warning_lines(const std::vector<std::string>& labels,
+                                            const std::vector<std::vector<std::string>>& warnings) {
+  // each distinct warning once, in the order of first appearance, with the
+  // cases it concerns
+  std::vector<std::pair<std::string, std::vector<size_t>>> groups;
+  for (size_t i = 0; i < warnings.size() && i < labels.size(); ++i)
+    for (const std::string& m : warnings[i]) {
+      auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& x) { return x.first == m; });
+      if (g == groups.end()) {
+        groups.push_back({m, {}});
+        g = groups.end() - 1;
+      }
+      if (g->second.empty() || g->second.back() != i) g->second.push_back(i);
+    }
+  std::vector<std::string> lines;
+  for (const auto& [m, cases] : groups) {
+    std::string who;
+    if (cases.size() == labels.size() && labels.size() > 1) {
+      who = fmt::format("all {} cases", labels.size());
+    } else {
+      for (const size_t i : cases) who += (who.empty() ? "" : ", ") + labels[i];
+    }
+    lines.push_back(fmt::format("linerlife: warning: {}: {}", who, m));
+  }
+  return lines;
+}
+
+ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fitted, bool print_warnings) {
   // A coarse-grained DEM needs its largest disc under the lifter
   // (docs/models/dem.md §3); the forecast wears the lifter down to
   // min_lifter_height_m, and the DEM would refuse a drive part-way through.
@@ -82,8 +112,10 @@ ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fi
                                    config_location(c, "dem.coarse_grain"), s, s * dmax, h_end,
                                    std::max(1.0, std::floor(h_end / dmax * 1000) / 1000)));
   }
-  warn_wear_loads(c, fitted);
   ForecastSetup s;
+  s.warnings = wear_load_warnings(c, fitted);
+  if (print_warnings)
+    for (const std::string& m : s.warnings) std::cerr << "linerlife: warning: " << m << "\n";
   s.surface = std::make_shared<LinerSurface>(build_liner_surface(c.mill, c.liner));
   s.input.initial = s.surface.get();
   s.input.rotation = c.mill.rotation;

@@ -6,6 +6,8 @@
 
 #include <array>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "app/config.h"
 #include "forecast/forecast.h"
@@ -17,24 +19,39 @@ struct ForecastSetup {
   std::shared_ptr<LinerSurface> surface;    // the initial ring
   ForecastInput input;                      // points at *surface
   std::unique_ptr<RateProvider> provider;   // charge model + wear laws
+  std::vector<std::string> warnings;        // wear_load_warnings() of the configuration
 };
 
 /// Throws InputError for a charge model that is not available, an
 /// incompatible wear law, a liner material out of range, or a DEM coarse
 /// enough that its discs would not fit under the lifter the forecast wears
-/// down to (naming the key). Prints warn_wear_loads()'s caveats; `fitted`:
-/// the calibration factors the run fits (calibrate's --fit).
-ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fitted = {false, false, false});
+/// down to (naming the key). Keeps wear_load_warnings() in `warnings` and
+/// prints them unless `print_warnings` is false (compare prints its cases'
+/// together: case_warning_lines()); `fitted`: the calibration factors the run
+/// fits (calibrate's --fit).
+ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fitted = {false, false, false},
+                                  bool print_warnings = true);
 
-/// Prints a warning to stderr when the configuration's charge model gives
-/// wear loads that may be off: the DEM with coarse_grain > 1 (its wear rate
+/// The warnings (without the "linerlife: warning: " prefix) for a
+/// configuration whose charge model gives wear loads that may be off: the DEM with coarse_grain > 1 (its wear rate
 /// came out -11 to +40 % of the media-size run's on the pilot mills,
 /// docs/validation/speed-accuracy.md), and the DEM with a wear calibration
 /// factor (centrifugal, gravitational, impact) left at 1 that the run does
 /// not fit (`fitted`): the default constants are the thesis', used with its
 /// layer model, and with them the DEM wears 7.4-9.4 times as fast
-/// (docs/validation/ball-mill.md). Returns whether it warned.
+/// (docs/validation/ball-mill.md). Empty for any other model.
+std::vector<std::string> wear_load_warnings(const Config& c, const std::array<bool, 3>& fitted = {false, false, false});
+
+/// Prints wear_load_warnings() to stderr, one "linerlife: warning: " line
+/// each; returns whether there was any.
 bool warn_wear_loads(const Config& c, const std::array<bool, 3>& fitted = {false, false, false});
+
+/// The warnings of several cases (compare), each distinct one once, naming
+/// the cases it concerns ("all N cases" when every case has it):
+/// "linerlife: warning: LABELS: MESSAGE". `labels` and `warnings` run
+/// parallel, one entry per case.
+std::vector<std::string> case_warning_lines(const std::vector<std::string>& labels,
+                                            const std::vector<std::vector<std::string>>& warnings);
 
 /// A provider for the configuration with its wear calibration factors scaled
 /// (centrifugal, gravitational, impact): the parameters `calibrate` fits.

@@ -219,3 +219,42 @@ TEST_CASE("calibrate's fitted factors do not count as uncalibrated", "[app][wear
   c.model.charge = "layer";
   CHECK(!warn_wear_loads(c));
 }
+
+// compare: each warning once, naming the cases it concerns (it printed one
+// unlabelled copy per case).
+TEST_CASE("compare's warnings are printed once each with the cases they concern", "[app][wear]") {
+  const std::vector<std::string> labels = {"a=1", "a=2", "a=3"};
+  const std::vector<std::string> l = case_warning_lines(labels, {{"X", "Y"}, {"X"}, {"X", "Z"}});
+  REQUIRE(l.size() == 3);
+  CHECK(l[0] == "linerlife: warning: all 3 cases: X");
+  CHECK(l[1] == "linerlife: warning: a=1: Y");
+  CHECK(l[2] == "linerlife: warning: a=3: Z");
+  const std::vector<std::string> m = case_warning_lines(labels, {{"Y"}, {}, {"Y"}});
+  REQUIRE(m.size() == 1);
+  CHECK(m[0] == "linerlife: warning: a=1, a=3: Y");
+  CHECK(case_warning_lines(labels, {{}, {}, {}}).empty());
+}
+
+TEST_CASE("compare names the cases whose DEM wear is uncalibrated", "[app][cli][compare][dem]") {
+  if (!has_model("dem")) return;
+  const fs::path dir = temp_dir("compare_warn");
+  // a DEM forecast of pilot test 1 cut down to a few seconds
+  const std::string text = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/pilot_test_01.toml");
+  REQUIRE(text.find("[forecast]") == std::string::npos);
+  write_file(dir / "p.toml", std::regex_replace(text, std::regex("charge = \"layer\"\n"), "charge = \"dem\"\n") +
+                                 "\n[dem]\nthreads = 1\nsettle_revolutions = 0.2\n\n[forecast]\n"
+                                 "revolutions_per_drive = 0.5\nmin_lifter_height_m = 0.024\nmin_plate_thickness_m = 0.001\n");
+  const RunResult r =
+      run_linerlife("compare " + (dir / "p.toml").string() + " --vary wear.calibration_impact=1,1.0,0.5 --jobs 1", 120);
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const std::string all3 = "the DEM drives the wear with [wear] calibration_centrifugal, calibration_gravitational, "
+                           "calibration_impact = 1";
+  const std::string two = "the DEM drives the wear with [wear] calibration_centrifugal, calibration_gravitational = 1";
+  CHECK_THAT(r.err, Catch::Contains("warning: wear.calibration_impact=1, wear.calibration_impact=1.0: " + all3));
+  CHECK_THAT(r.err, Catch::Contains("warning: wear.calibration_impact=0.5: " + two));
+  // once each
+  CHECK(r.err.find(all3) == r.err.rfind(all3));
+  CHECK(r.err.find(two + ",") == r.err.rfind(two + ","));
+  fs::remove_all(dir);
+}
