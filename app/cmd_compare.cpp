@@ -4,6 +4,7 @@
 // direct liner impacts. The cases' forecasts are independent: they run
 // several at once (--jobs), each on one thread, with the same results as one
 // after the other.
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <mutex>
@@ -26,7 +27,7 @@ namespace {
 
 struct CompareOptions {
   std::vector<std::string> configs;
-  std::string vary;
+  std::vector<std::string> vary;  // KEY=v1,v2,...; several: every combination
   std::string method;
   bool json = false;
   std::string out;
@@ -36,6 +37,7 @@ struct CompareOptions {
 struct Case {
   std::string label;
   Config config;
+  std::string origin{};  // --vary: "--vary K1=V1 --vary K2=V2", what config_with() set
   ForecastResult result;
   double mean_power_kw = 0, final_power_kw = 0, mean_direct_impacts = 0;
   std::string caveat{};  // on the power history (worn_power_caveat())
@@ -63,12 +65,71 @@ std::vector<std::string> split(const std::string& s, char sep) {
 }
 
 /// An error of one case, located in its configuration; a --vary case's
-/// message says which case ("--vary KEY=V: ...") unless it already does.
+/// message says which case ("--vary KEY=V: ...", one per varied key) unless
+/// it already does.
 InputError in_case(const Case& k, const InputError& e) {
   const InputError l = located(k.config, e);
-  const auto o = k.config.key_origin.begin();  // --vary: the one key config_with() set
-  if (k.config.key_origin.size() != 1 || std::string(l.what()).rfind(o->second + ":", 0) == 0) return l;
-  return InputError(l.key(), o->second + ": " + l.what());
+  if (k.origin.empty()) return l;
+  const std::string msg = l.what();
+  for (const auto& o : k.config.key_origin)
+    if (msg.rfind(o.second + ":", 0) == 0) {
+      if (o.second == k.origin) return l;
+      // the key's own option: the case's other varied keys before it
+      return InputError(l.key(), k.origin + msg.substr(o.second.size()));
+    }
+  return InputError(l.key(), k.origin + ": " + msg);
+}
+
+/// The cases of `compare CONFIG --vary K1=... [--vary K2=...]`: every
+/// combination of the values, the first key varying slowest.
+std::vector<Case> vary_cases(const Config& base, const std::vector<std::string>& vary) {
+  struct Axis {
+    std::string key;
+    std::vector<std::string> values;
+  };
+  std::vector<Axis> axes;
+  for (const std::string& v : vary) {
+    const auto eq = v.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 >= v.size())
+      throw InputError("--vary", fmt::format("--vary {}: write KEY=v1,v2,... (e.g. liner.face_angle_leading_deg=15,25)", v));
+    Axis a{v.substr(0, eq), split(v.substr(eq + 1), ',')};
+    for (const Axis& b : axes)
+      if (b.key == a.key)
+        throw InputError("--vary", fmt::format("--vary {}: {} is already varied; give its values in one --vary", v, a.key));
+    if (a.values.size() < 2 && vary.size() == 1)
+      throw InputError("--vary", fmt::format("--vary {}: give at least two values", v));
+    for (const std::string& x : a.values)
+      if (x.empty()) throw InputError("--vary", fmt::format("--vary {}: an empty value", v));
+    axes.push_back(std::move(a));
+  }
+  size_t n = 1;
+  for (const Axis& a : axes) n *= a.values.size();
+  if (n < 2) throw InputError("--vary", fmt::format("--vary: {} case; give at least two values", n));
+  std::vector<Case> cases;
+  for (size_t i = 0; i < n; ++i) {
+    // mixed-radix digits, the last axis fastest
+    std::vector<size_t> at(axes.size());
+    size_t r = i;
+    for (size_t a = axes.size(); a-- > 0;) {
+      at[a] = r % axes[a].values.size();
+      r /= axes[a].values.size();
+    }
+    Case k;
+    k.config = base;
+    for (size_t a = 0; a < axes.size(); ++a) {
+      const std::string kv = axes[a].key + "=" + axes[a].values[at[a]];
+      k.label += (a ? " " : "") + kv;
+      try {
+        k.config = config_with(k.config, axes[a].key, axes[a].values[at[a]], "--vary");
+      } catch (const InputError& e) {
+        // "--vary K=V: ..." for the key refused, after the case's keys before it
+        throw InputError(e.key(), k.origin + (k.origin.empty() ? "" : " ") + e.what());
+      }
+      k.origin += (a ? " " : "") + std::string("--vary ") + kv;
+    }
+    cases.push_back(std::move(k));
+  }
+  return cases;
 }
 
 int run_compare(const CompareOptions& o) {
@@ -77,19 +138,16 @@ int run_compare(const CompareOptions& o) {
     if (o.configs.size() > 1)
       throw InputError("--vary", "--vary takes one configuration (or none: the bundled mill); got " +
                                      std::to_string(o.configs.size()));
-    const Config base = load_config_or_default(o.configs.empty() ? "" : o.configs.front());
-    const auto eq = o.vary.find('=');
-    if (eq == std::string::npos || eq + 1 >= o.vary.size())
-      throw InputError("--vary", fmt::format("--vary {}: write KEY=v1,v2,... (e.g. liner.face_angle_leading_deg=15,25)",
-                                             o.vary));
-    const std::string key = o.vary.substr(0, eq);
-    const std::vector<std::string> values = split(o.vary.substr(eq + 1), ',');
-    if (values.size() < 2) throw InputError("--vary", fmt::format("--vary {}: give at least two values", o.vary));
-    for (const auto& v : values) cases.push_back({key + "=" + v, config_with(base, key, v, "--vary"), {}});
+    cases = vary_cases(load_config_or_default(o.configs.empty() ? "" : o.configs.front()), o.vary);
   } else {
     if (o.configs.size() < 2)
       throw InputError("compare", "compare needs two or more configurations, or one with --vary KEY=v1,v2,...");
-    for (const auto& p : o.configs) cases.push_back({p, load_config_file(p), {}});
+    for (const auto& p : o.configs) {
+      Case k;
+      k.label = p;
+      k.config = load_config_file(p);
+      cases.push_back(std::move(k));
+    }
   }
   bool dem = false;
   for (const Case& k : cases) dem = dem || k.config.model.charge == "dem";
@@ -167,10 +225,12 @@ int run_compare(const CompareOptions& o) {
     }
     std::cout << Json::object().set("cases", arr).dump() << "\n";
   } else {
-    std::cout << fmt::format("{:<36} {:>11} {:>9} {:>22} {:>10} {:>10} {:>8}\n", "case", "relining", "hours",
+    size_t w = 36;
+    for (const Case& k : cases) w = std::max(w, k.label.size() + 1);
+    std::cout << fmt::format("{:<{}} {:>11} {:>9} {:>22} {:>10} {:>10} {:>8}\n", "case", w, "relining", "hours",
                              "criterion", "power kW", "end kW", "direct");
     for (const Case& k : cases)
-      std::cout << fmt::format("{:<36} {:>11} {:>9.0f} {:>22} {:>10.0f} {:>10.0f} {:>8.3f}\n", k.label,
+      std::cout << fmt::format("{:<{}} {:>11} {:>9.0f} {:>22} {:>10.0f} {:>10.0f} {:>8.3f}\n", k.label, w,
                                iso_date(k.result.relining_date), k.result.operating_hours, k.result.criterion,
                                k.mean_power_kw, k.final_power_kw, k.mean_direct_impacts);
   }
@@ -218,7 +278,11 @@ void register_compare(CLI::App& app, std::function<int()>& run) {
   auto o = std::make_shared<CompareOptions>();
   auto* cmd = app.add_subcommand("compare", "Forecasts for several lifter designs or operating choices side by side");
   cmd->add_option("CONFIG", o->configs, "Two or more configurations, or one with --vary");
-  cmd->add_option("--vary", o->vary, "KEY=v1,v2,... one key (section.key) over several values");
+  cmd->add_option("--vary", o->vary,
+                  "KEY=v1,v2,... one key (section.key) over several values; repeated: every combination")
+      ->expected(1)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--method", o->method, "ode (default), amplify or euler")->check(CLI::IsMember({"ode", "amplify", "euler"}));
   cmd->add_flag("--json", o->json, "Print one JSON object instead of the table");
   cmd->add_option("--out", o->out, "Write compare.h5 and charts into this folder");

@@ -52,6 +52,11 @@ FORECASTS = [
     # the DEM forecast's own convergence in the revolutions a drive
     ("dem, 6 revolutions, 8 mm", {**DEM_DRIVE, "forecast": {"revolutions_per_drive": "6", "refresh_tol_m": "0.008"}},
      True),
+    # and in the refresh tolerance
+    ("dem, 2 revolutions, 4 mm", {**DEM_DRIVE, "forecast": {"revolutions_per_drive": "2", "refresh_tol_m": "0.004"}},
+     True),
+    ("dem, 2 revolutions, 16 mm", {**DEM_DRIVE, "forecast": {"revolutions_per_drive": "2", "refresh_tol_m": "0.016"}},
+     True),
 ]
 
 

@@ -5,9 +5,28 @@ import numpy as np
 from plot_common import save
 
 
+def vary_keys(labels):
+    """The keys of --vary cases ("sec.key=v sec2.key2=w"), if every case sets the same ones in the same order."""
+    keys = None
+    for label in labels:
+        parts = [p.split("=", 1) for p in label.split(" ")]
+        if not all(len(p) == 2 and "." in p[0] for p in parts):
+            return None
+        k = [p[0] for p in parts]
+        if keys is not None and k != keys:
+            return None
+        keys = k
+    return keys
+
+
 def draw(h5, out):
     c = h5["/cases"]
     labels = c.attrs["labels"].split("\n")
+    keys = vary_keys(labels)
+    xlabel = ""
+    if keys:  # the values on the ticks, the keys under the axis
+        labels = [" / ".join(p.split("=", 1)[1] for p in x.split(" ")) for x in labels]
+        xlabel = " / ".join(k.split(".", 1)[1] for k in keys)
     hours = np.asarray(c["operating_hours"])
     mean_p = np.asarray(c["mean_net_power_kw"])
     end_p = np.asarray(c["final_net_power_kw"])
@@ -25,5 +44,7 @@ def draw(h5, out):
     for a in axes:
         a.set_xticks(x)
         a.set_xticklabels(labels, rotation=30, ha="right", fontsize=8)
+        if xlabel:
+            a.set_xlabel(xlabel, fontsize=8)
     fig.tight_layout()
     save(fig, out, "compare.png")

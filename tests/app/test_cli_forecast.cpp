@@ -208,6 +208,43 @@ TEST_CASE("compare --vary forecasts one case per value and ranks them in a table
   fs::remove_all(dir);
 }
 
+TEST_CASE("compare with two --vary forecasts every combination of their values", "[app][cli][compare]") {
+  // a lifter design is a height and a face angle together
+  const fs::path dir = temp_dir("fc_compare_grid");
+  write_file(dir / "m.toml", fast_qiu());
+  const RunResult r = run_linerlife("compare --vary liner.lifter_height_m=0.23,0.25 " + (dir / "m.toml").string() +
+                                    " --vary liner.face_angle_leading_deg=15,22 --json --jobs 1");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const JsonValue j = parse_json(r.out);
+  const auto& cases = j["cases"].items();
+  REQUIRE(cases.size() == 4);
+  // the first key varies slowest
+  const char* labels[] = {"liner.lifter_height_m=0.23 liner.face_angle_leading_deg=15",
+                          "liner.lifter_height_m=0.23 liner.face_angle_leading_deg=22",
+                          "liner.lifter_height_m=0.25 liner.face_angle_leading_deg=15",
+                          "liner.lifter_height_m=0.25 liner.face_angle_leading_deg=22"};
+  for (size_t i = 0; i < 4; ++i) CHECK(cases[i]["case"].str() == labels[i]);
+  // each case has both values: at either face angle the taller new lifter
+  // lasts longer to the same 0.20 m, and a case equals its one-key run
+  CHECK(cases[2]["operating_hours"].num() > cases[0]["operating_hours"].num() * 1.1);
+  CHECK(cases[3]["operating_hours"].num() > cases[1]["operating_hours"].num() * 1.1);
+  const RunResult one = run_linerlife("compare " + (dir / "m.toml").string() +
+                                      " --vary liner.face_angle_leading_deg=15,22 --json --jobs 1 --vary liner.lifter_height_m=0.25"
+                                      " --out " + (dir / "out").string());
+  INFO(one.err);
+  REQUIRE(one.code == 0);
+  const JsonValue j1 = parse_json(one.out);
+  const auto& c1 = j1["cases"].items();
+  REQUIRE(c1.size() == 2);
+  CHECK(c1[1]["case"].str() == "liner.face_angle_leading_deg=22 liner.lifter_height_m=0.25");
+  CHECK(c1[1]["operating_hours"].num() == cases[3]["operating_hours"].num());
+  CHECK(c1[1]["mean_net_power_kw"].num() == cases[3]["mean_net_power_kw"].num());
+  CHECK(fs::exists(dir / "out" / "compare.h5"));
+  if (python_charts_available()) CHECK(fs::exists(dir / "out" / "compare.png"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("compare runs its forecasts at once with the results of one after the other", "[app][cli][compare]") {
   // --jobs: each worker takes the next case; the table, the JSON and the
   // results file must not depend on how many run at once or in which order
