@@ -1,12 +1,13 @@
 #!/usr/bin/python3
 """Does the fast model rank lifter designs as the DEM does? `linerlife compare`
 over a grid of lifter designs with the layer model (the default) and with the
-DEM (docs/validation/ball-mill.md, "Ranking lifter designs").
+DEM (docs/validation/ball-mill.md and speed-accuracy.md, "Ranking lifter
+designs").
 
 The DEM's wear calibration is scaled once, for every design, as in
-bench/ball_mill.py (its three factors times the ratio of the layer V-1.2's
-new-liner mass-loss rate to the DEM reference's, read from that script's
-cache), so that the two models' lives differ by where the wear goes and how
+bench/ball_mill.py and speed_accuracy.py (its three factors times the ratio of
+the layer V-1.2's new-liner mass-loss rate to the DEM reference's: read from
+ball_mill.py's cache for the ball mill, or given by --scale), so that the two models' lives differ by where the wear goes and how
 it feeds back, not by its amount; the same constants serve every design, as a
 plant's would. The DEM forecasts use ball_mill.py's drive settings (2
 revolutions a drive, 8 mm refresh, two threads); compare runs them one at a
@@ -15,6 +16,8 @@ without running anything; delete a file to run that model again).
 
     /usr/bin/python3 bench/design_ranking.py --out /tmp/design_rank \\
         [--vary liner.face_angle_leading_deg=15,30,45 --vary liner.lifter_height_m=0.09,0.15]
+    /usr/bin/python3 bench/design_ranking.py --mill data/mills/qiu2001_sag.toml --scale 0.13445 \\
+        --out /tmp/design_rank_qiu --vary liner.face_angle_leading_deg=10,15,20
 """
 import argparse
 import json
@@ -77,14 +80,21 @@ def main():
     ap.add_argument("--linerlife", default=os.path.join(ROOT, "build/app/linerlife"))
     ap.add_argument("--ball-mill-cache", default="/tmp/ball_mill/results.json",
                     help="bench/ball_mill.py's results (for the DEM's calibration scale)")
+    ap.add_argument("--mill", default=CONFIG)
+    ap.add_argument("--scale", type=float, default=0.0,
+                    help="the DEM's calibration scale (default: from --ball-mill-cache, for the ball mill)")
     ap.add_argument("--out", default="/tmp/design_rank")
     ap.add_argument("--vary", action="append", help="as compare's --vary (default: %s)" % " ".join(DEFAULT_VARY))
     a = ap.parse_args()
     vary = a.vary or DEFAULT_VARY
     os.makedirs(a.out, exist_ok=True)
-    bm = json.load(open(a.ball_mill_cache))
-    scale = bm["charge/layer 1.2"]["mass_rate_kg_s_per_m"] / bm[f"charge/{REF[0]}"]["mass_rate_kg_s_per_m"]
-    base = open(os.path.join(ROOT, CONFIG)).read()
+    scale = a.scale
+    if not scale > 0:
+        if a.mill != CONFIG:
+            sys.exit("give --scale for a mill other than " + CONFIG)
+        bm = json.load(open(a.ball_mill_cache))
+        scale = bm["charge/layer 1.2"]["mass_rate_kg_s_per_m"] / bm[f"charge/{REF[0]}"]["mass_rate_kg_s_per_m"]
+    base = open(os.path.join(ROOT, a.mill)).read()
     dem = set_key(set_key(base, "model", "charge", '"dem"'), "dem", "threads", "2")
     dem = set_key(set_key(dem, "forecast", "revolutions_per_drive", "2"), "forecast", "refresh_tol_m", "0.008")
     for k in ("calibration_centrifugal", "calibration_gravitational", "calibration_impact"):
@@ -106,7 +116,7 @@ def main():
     hl = [c["operating_hours"] for c in L]
     hd = [c["operating_hours"] for c in D]
     rl, rd = ranks(hl), ranks(hd)
-    print(f"Mill {CONFIG}; the DEM's calibration x {scale:.4g}. Commands (from {a.out}): "
+    print(f"Mill {a.mill}; the DEM's calibration x {scale:.4g}. Commands (from {a.out}): "
           f"`{res['layer']['command']}` ({res['layer']['wall_s']:.0f} s) and `{res['dem']['command']}` "
           f"({res['dem']['wall_s']:.0f} s).\n")
     print("| design | layer: life [h] | rank | criterion | DEM: life [h] | rank | criterion | layer / DEM |")
