@@ -204,6 +204,12 @@ int run_compare(const CompareOptions& o) {
     if (!k.caveat.empty()) note(fmt::format("linerlife: note: {}: {}", k.label, k.caveat));
   }
 
+  // designs ranked by the layer model: check the short list with the DEM
+  std::vector<const Config*> configs;
+  for (const Case& k : cases) configs.push_back(&k.config);
+  const std::string ranking = design_ranking_caveat(configs);
+  if (!ranking.empty()) note("linerlife: note: " + ranking);
+
   if (o.json) {
     Json arr = Json::array();
     for (const Case& k : cases) {
@@ -223,7 +229,7 @@ int run_compare(const CompareOptions& o) {
           .set("caveats", caveats_json(k.caveat));
       arr.push(j);
     }
-    std::cout << Json::object().set("cases", arr).dump() << "\n";
+    std::cout << Json::object().set("cases", arr).set("caveats", caveats_json(ranking)).dump() << "\n";
   } else {
     size_t w = 36;
     for (const Case& k : cases) w = std::max(w, k.label.size() + 1);

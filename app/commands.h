@@ -81,4 +81,11 @@ std::string worn_power_caveat(const std::string& charge_model, const std::vector
 /// A caveat as it goes into --json: an array of {text}, empty without one.
 Json caveats_json(const std::string& caveat);
 
+/// `compare` of lifter designs by the layer model: its ranking of designs is
+/// not the DEM's everywhere (docs/validation/ball-mill.md, "Ranking lifter
+/// designs"). Non-empty when some case runs the layer model and the cases'
+/// [liner] sections differ; says what the DEM comparison found and to check
+/// the short list with the DEM.
+std::string design_ranking_caveat(const std::vector<const Config*>& cases);
+
 }  // namespace linerlife

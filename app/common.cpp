@@ -110,6 +110,28 @@ std::string worn_power_caveat(const std::string& charge_model, const std::vector
   return worn_power_caveat(charge_model, hours, power);
 }
 
+std::string design_ranking_caveat(const std::vector<const Config*>& cases) {
+  bool layer = false;
+  for (const Config* c : cases) layer = layer || c->model.charge == "layer";
+  if (!layer || cases.size() < 2) return "";
+  auto liner_section = [](const Config& c) {
+    const std::string t = config_to_toml(c, false);
+    const auto a = t.find("\n[liner]\n");
+    if (a == std::string::npos) return std::string();
+    return t.substr(a, t.find("\n[", a + 1) - a);
+  };
+  const std::string first = liner_section(*cases.front());
+  bool differ = false;
+  for (const Config* c : cases) differ = differ || liner_section(*c) != first;
+  if (!differ) return "";
+  // docs/validation/ball-mill.md, "Ranking lifter designs" (bench/design_ranking.py)
+  return "the layer model ranks lifter designs only roughly as the 2D DEM does: on the example ball mill both pick the "
+         "same best of six designs but order 9 of 15 pairs alike (its 45 deg faces relined at 27-48 % of the DEM's "
+         "life), on the bundled Qiu mill 2 of 3 (faces 10/15/20 deg: the DEM 15 deg by 3.8 %, the layer model 20 deg by "
+         "27 %) (docs/validation/ball-mill.md, \"Ranking lifter designs\"). Check the short list with the DEM "
+         "([model] charge = \"dem\", calibrated wear) before choosing";
+}
+
 Json caveats_json(const std::string& caveat) {
   Json a = Json::array();
   if (!caveat.empty()) {

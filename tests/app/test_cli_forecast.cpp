@@ -208,6 +208,24 @@ TEST_CASE("compare --vary forecasts one case per value and ranks them in a table
   fs::remove_all(dir);
 }
 
+TEST_CASE("compare of lifter designs by the layer model says its ranking is to be checked with the DEM",
+          "[app][compare]") {
+  const Config base = load_config_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/qiu2001_sag.toml");
+  Config taller = base, longer = base, dem = base, dem_taller = base;
+  taller.liner.design.lifter_height_m = 0.27;
+  longer.mill.length_m = 5.0;  // an operating choice, not the liner
+  dem.model.charge = dem_taller.model.charge = "dem";
+  dem_taller.liner.design.lifter_height_m = 0.27;
+  const std::string c = design_ranking_caveat({&base, &taller});
+  CHECK(c.find("docs/validation/ball-mill.md") != std::string::npos);
+  CHECK(c.find("charge = \"dem\"") != std::string::npos);
+  CHECK(design_ranking_caveat({&base, &dem_taller}) == c);  // one layer case is enough
+  // the same liner (an operating choice), or the DEM throughout: none
+  CHECK(design_ranking_caveat({&base, &longer}).empty());
+  CHECK(design_ranking_caveat({&dem, &dem_taller}).empty());
+  CHECK(design_ranking_caveat({&base}).empty());
+}
+
 TEST_CASE("compare with two --vary forecasts every combination of their values", "[app][cli][compare]") {
   // a lifter design is a height and a face angle together
   const fs::path dir = temp_dir("fc_compare_grid");
@@ -225,6 +243,9 @@ TEST_CASE("compare with two --vary forecasts every combination of their values",
                           "liner.lifter_height_m=0.25 liner.face_angle_leading_deg=15",
                           "liner.lifter_height_m=0.25 liner.face_angle_leading_deg=22"};
   for (size_t i = 0; i < 4; ++i) CHECK(cases[i]["case"].str() == labels[i]);
+  // designs ranked by the layer model: the caveat, once, in the JSON and on stderr
+  REQUIRE(j["caveats"].items().size() == 1);
+  CHECK(r.err.find(j["caveats"].items()[0]["text"].str()) != std::string::npos);
   // each case has both values: at either face angle the taller new lifter
   // lasts longer to the same 0.20 m, and a case equals its one-key run
   CHECK(cases[2]["operating_hours"].num() > cases[0]["operating_hours"].num() * 1.1);
