@@ -263,8 +263,10 @@ int run_compare(const CompareOptions& o) {
         h5.attr(g, "label", k.label);
         h5.text(g + "/config", config_to_toml(k.config, false));
         write_forecast(h5, g + "/forecast", k.result, k.config.forecast);
+        if (!k.caveat.empty()) h5.attr(g + "/forecast", "caveat", k.caveat);  // as forecast.h5's
       }
       h5.attr("/cases", "labels", labels);
+      if (!ranking.empty()) h5.attr("/cases", "caveat", ranking);
       h5.dataset("/cases/operating_hours", hours, {hours.size()}, "h");
       h5.dataset("/cases/mean_net_power_kw", mean_p, {mean_p.size()}, "kW");
       h5.dataset("/cases/final_net_power_kw", end_p, {end_p.size()}, "kW");

@@ -261,8 +261,17 @@ TEST_CASE("compare with two --vary forecasts every combination of their values",
   CHECK(c1[1]["case"].str() == "liner.face_angle_leading_deg=22 liner.lifter_height_m=0.25");
   CHECK(c1[1]["operating_hours"].num() == cases[3]["operating_hours"].num());
   CHECK(c1[1]["mean_net_power_kw"].num() == cases[3]["mean_net_power_kw"].num());
-  CHECK(fs::exists(dir / "out" / "compare.h5"));
+  REQUIRE(fs::exists(dir / "out" / "compare.h5"));
   if (python_charts_available()) CHECK(fs::exists(dir / "out" / "compare.png"));
+  // the file keeps the caveats as forecast.h5 does: the ranking's on /cases,
+  // a case's power caveat on its forecast (the layer model's power rises with wear)
+  {
+    const H5Reader h5((dir / "out" / "compare.h5").string());
+    CHECK(h5.attr_string("/cases", "caveat") == j1["caveats"].items()[0]["text"].str());
+    for (size_t i = 0; i < 2; ++i)
+      for (const auto& cv : c1[i]["caveats"].items())
+        CHECK(h5.attr_string("/cases/" + std::to_string(i) + "/forecast", "caveat") == cv["text"].str());
+  }
   fs::remove_all(dir);
 }
 
