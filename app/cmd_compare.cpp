@@ -65,8 +65,8 @@ std::vector<std::string> split(const std::string& s, char sep) {
 }
 
 /// An error of one case, located in its configuration; a --vary case's
-/// message says which case ("--vary KEY=V: ...", one per varied key) unless
-/// it already does.
+/// message starts with the case ("--vary K1=V1 --vary K2=V2: ...", every
+/// varied key in --vary order) unless it already does.
 InputError in_case(const Case& k, const InputError& e) {
   const InputError l = located(k.config, e);
   if (k.origin.empty()) return l;
@@ -74,7 +74,7 @@ InputError in_case(const Case& k, const InputError& e) {
   for (const auto& o : k.config.key_origin)
     if (msg.rfind(o.second + ":", 0) == 0) {
       if (o.second == k.origin) return l;
-      // the key's own option: the case's other varied keys before it
+      // one key's option: the whole case instead
       return InputError(l.key(), k.origin + msg.substr(o.second.size()));
     }
   return InputError(l.key(), k.origin + ": " + msg);
@@ -93,9 +93,23 @@ std::vector<Case> vary_cases(const Config& base, const std::vector<std::string>&
     if (eq == std::string::npos || eq == 0 || eq + 1 >= v.size())
       throw InputError("--vary", fmt::format("--vary {}: write KEY=v1,v2,... (e.g. liner.face_angle_leading_deg=15,25)", v));
     Axis a{v.substr(0, eq), split(v.substr(eq + 1), ',')};
+    // the key, before any case is built (config_with() checks it again)
+    const auto dot = a.key.find('.');
+    if (dot == std::string::npos)
+      throw InputError("--vary", fmt::format("--vary {}: \"{}\" is not a key; write it as section.key, e.g. "
+                                             "liner.face_angle_leading_deg", v, a.key));
+    if (!config_schema().find(a.key.substr(0, dot), a.key.substr(dot + 1)))
+      throw InputError("--vary", fmt::format("--vary {}: unknown configuration key [{}] {}", v, a.key.substr(0, dot),
+                                             a.key.substr(dot + 1)));
+    if (v.back() == ',') throw InputError("--vary", fmt::format("--vary {}: an empty value", v));
+    // the mill's speed is one setting, given in rpm or as a fraction of critical
+    auto same = [](const std::string& x, const std::string& y) {
+      auto speed = [](const std::string& k) { return k == "mill.speed_rpm" || k == "mill.speed_fraction_critical"; };
+      return x == y || (speed(x) && speed(y));
+    };
     for (const Axis& b : axes)
-      if (b.key == a.key)
-        throw InputError("--vary", fmt::format("--vary {}: {} is already varied; give its values in one --vary", v, a.key));
+      if (same(b.key, a.key))
+        throw InputError("--vary", fmt::format("--vary {}: {} is already varied; give its values in one --vary", v, b.key));
     if (a.values.size() < 2 && vary.size() == 1)
       throw InputError("--vary", fmt::format("--vary {}: give at least two values", v));
     for (const std::string& x : a.values)

@@ -114,11 +114,24 @@ std::string design_ranking_caveat(const std::vector<const Config*>& cases) {
   bool layer = false;
   for (const Config* c : cases) layer = layer || c->model.charge == "layer";
   if (!layer || cases.size() < 2) return "";
+  // the liner's geometry: its [liner] lines but the mesh and the material
   auto liner_section = [](const Config& c) {
     const std::string t = config_to_toml(c, false);
     const auto a = t.find("\n[liner]\n");
     if (a == std::string::npos) return std::string();
-    return t.substr(a, t.find("\n[", a + 1) - a);
+    const std::string sec = t.substr(a, t.find("\n[", a + 1) - a);
+    std::string out;
+    size_t p = 0;
+    while (p < sec.size()) {
+      const size_t e = std::min(sec.find('\n', p), sec.size());
+      const std::string line = sec.substr(p, e - p);
+      bool skip = false;
+      for (const char* k : {"element_size_m", "lifter_grid_cells", "density_kg_m3", "hardness_bhn"})
+        skip = skip || line.rfind(std::string(k) + " ", 0) == 0;
+      if (!skip) out += line + "\n";
+      p = e + 1;
+    }
+    return out;
   };
   const std::string first = liner_section(*cases.front());
   bool differ = false;

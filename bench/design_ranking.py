@@ -11,8 +11,9 @@ ball_mill.py's cache for the ball mill, or given by --scale), so that the two mo
 it feeds back, not by its amount; the same constants serve every design, as a
 plant's would. The DEM forecasts use ball_mill.py's drive settings (2
 revolutions a drive, 8 mm refresh, two threads); compare runs them one at a
-time. Results are cached in OUT/<model>.json (a rerun prints the tables
-without running anything; delete a file to run that model again).
+time. Results are cached in OUT/<model>.json with the arguments (a rerun
+with the same ones prints the tables without running anything; other
+arguments are refused; delete a file to run that model again).
 
     /usr/bin/python3 bench/design_ranking.py --out /tmp/design_rank \\
         [--vary liner.face_angle_leading_deg=15,30,45 --vary liner.lifter_height_m=0.09,0.15]
@@ -104,9 +105,12 @@ def main():
         path = os.path.join(a.out, name + ".json")
         if os.path.exists(path):
             res[name] = json.load(open(path))
+            if res[name].get("args") != [a.mill, vary, scale]:
+                sys.exit(f"{path} holds a run of other arguments ({res[name].get('args')}); give another --out")
             continue
         print(f"running {name} ...", file=sys.stderr, flush=True)
         res[name] = compare(a.linerlife, text, a.out, name, vary)
+        res[name]["args"] = [a.mill, vary, scale]
         tmp = path + ".tmp"
         json.dump(res[name], open(tmp, "w"), indent=1)
         os.replace(tmp, path)

@@ -196,6 +196,11 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
        {"--vary liner.lifter_height_m=0.2: liner.lifter_height_m is already varied"}},
       {"compare --vary liner.lifter_height_m=0.23 --vary mill.speed_rpm=10" + o, {"--vary: 1 case", "at least two"}},
       {"compare --vary liner.lifter_height_m=0.23,,0.25" + o, {"--vary liner.lifter_height_m=0.23,,0.25: an empty value"}},
+      {"compare --vary liner.lifter_height_m=0.23,0.25," + o, {"--vary liner.lifter_height_m=0.23,0.25,: an empty value"}},
+      {"compare --vary liner.lifter_height_m=0.23,0.25 --vary liner.bogus=1,2" + o,
+       {"--vary liner.bogus=1,2: unknown configuration key [liner] bogus"}},
+      {"compare --vary mill.speed_rpm=10,10.5 --vary mill.speed_fraction_critical=0.7,0.75" + o,
+       {"mill.speed_rpm is already varied"}},
       {"compare --vary liner.lifter_height_m=0.23,0.25 --vary liner.face_angle_leading_deg=20,-5" + o,
        {"--vary liner.lifter_height_m=0.23 --vary liner.face_angle_leading_deg=-5: ", "face_angle_leading_deg = -5"}},
       {"compare --vary liner.lifter_height_m=0.23,0.25 --jobs -1" + o, {"--jobs -1", "allowed 1 <= value"}},
@@ -384,6 +389,12 @@ TEST_CASE("compare --vary points an error at the file's lines or at the option f
   INFO(r.err);
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Contains("error: --vary dem.time_step_s=0.01: [dem] time_step_s: time_step_s = 0.01 s"));
+  // with two --vary, the whole case
+  r = run_linerlife("compare " + file + " --vary dem.time_step_s=0.01,0.02 --vary liner.lifter_height_m=0.25,0.26", 60);
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("error: --vary dem.time_step_s=0.01 --vary liner.lifter_height_m=0.25: [dem] "
+                                    "time_step_s: time_step_s = 0.01 s"));
   // another key refused when the case is read: the case, then that key's line in the file
   r = run_linerlife("compare " + file + " --vary liner.face_angle_leading_deg=15,25", 60);
   INFO(r.err);
