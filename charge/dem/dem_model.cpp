@@ -263,6 +263,7 @@ ChargeResult run_dem(const ChargeInput& in, DemSetup setup, DemRunInfo* info_out
     if (in.record_snapshot && done > last_rev_start && sample_no % 6 == 0) {
       ChargeSnapshot snap;
       snap.time_s = sys.time();
+      snap.liner_angle_rad = sys.wall_angle();  // the physical frame's turn, as the layer model's
       for (int i = 0; i < n; ++i) {
         snap.position.emplace_back(sys.x()[i], sys.y()[i]);
         snap.radius_m.push_back(sys.radius()[i]);

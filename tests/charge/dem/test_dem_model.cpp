@@ -243,3 +243,23 @@ TEST_CASE("coarse-graining keeps the wall loads of the media-size run", "[dem][m
   CHECK(coarse.slip_power == Approx(fine.slip_power).epsilon(0.15));
   CHECK(coarse.impacts_per_s == Approx(fine.impacts_per_s).epsilon(0.15));
 }
+
+// The charge chart turns the liner by the snapshot's liner angle
+// (app/plots/plot_charge.py); the DEM left it at 0, so its discs were drawn on
+// a liner that had not turned.
+TEST_CASE("dem snapshots carry the angle the liner has turned", "[dem][model]") {
+  for (Rotation rot : {Rotation::Cw, Rotation::Ccw}) {
+    Pilot p(rot);
+    p.in.model.dem.settle_revolutions = 0.5;
+    p.in.model.dem.revolutions = 1;
+    p.in.record_snapshot = true;
+    const ChargeResult r = make_dem_model()->run(p.in);
+    REQUIRE(!r.snapshots.empty());
+    const double omega = p.mill.sense() * p.mill.speed_rpm * 2 * kPi / 60;
+    for (const ChargeSnapshot& s : r.snapshots) {
+      INFO("t = " << s.time_s);
+      CHECK(s.time_s > 0);
+      CHECK(s.liner_angle_rad == Approx(omega * s.time_s).epsilon(1e-12));
+    }
+  }
+}
