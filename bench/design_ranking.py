@@ -19,6 +19,10 @@ arguments are refused; delete a file to run that model again).
         [--vary liner.face_angle_leading_deg=15,30,45 --vary liner.lifter_height_m=0.09,0.15]
     /usr/bin/python3 bench/design_ranking.py --mill data/mills/qiu2001_sag.toml --scale 0.13445 \\
         --out /tmp/design_rank_qiu --vary liner.face_angle_leading_deg=10,15,20
+
+--layer-set SECTION.KEY=VALUE (repeatable) changes the layer model's
+configuration only (a layer option against the same DEM runs: copy dem.json
+from an earlier --out of the same mill, vary and scale).
 """
 import argparse
 import json
@@ -86,6 +90,8 @@ def main():
                     help="the DEM's calibration scale (default: from --ball-mill-cache, for the ball mill)")
     ap.add_argument("--out", default="/tmp/design_rank")
     ap.add_argument("--vary", action="append", help="as compare's --vary (default: %s)" % " ".join(DEFAULT_VARY))
+    ap.add_argument("--layer-set", action="append", default=[], metavar="SECTION.KEY=VALUE",
+                    help="set a key of the layer model's configuration only, e.g. model.pocket_loads=on")
     a = ap.parse_args()
     vary = a.vary or DEFAULT_VARY
     os.makedirs(a.out, exist_ok=True)
@@ -96,21 +102,33 @@ def main():
         bm = json.load(open(a.ball_mill_cache))
         scale = bm["charge/layer 1.2"]["mass_rate_kg_s_per_m"] / bm[f"charge/{REF[0]}"]["mass_rate_kg_s_per_m"]
     base = open(os.path.join(ROOT, a.mill)).read()
+    layer = base
+    for kv in a.layer_set:
+        key, sep, value = kv.partition("=")
+        section, dot, name = key.partition(".")
+        if not sep or not dot or not name or not value:
+            sys.exit(f"--layer-set {kv}: expected SECTION.KEY=VALUE")
+        try:
+            float(value)
+        except ValueError:
+            value = f'"{value}"'
+        layer = set_key(layer, section, name, value)
     dem = set_key(set_key(base, "model", "charge", '"dem"'), "dem", "threads", "2")
     dem = set_key(set_key(dem, "forecast", "revolutions_per_drive", "2"), "forecast", "refresh_tol_m", "0.008")
     for k in ("calibration_centrifugal", "calibration_gravitational", "calibration_impact"):
         dem = set_key(dem, "wear", k, f"{scale:.6g}")
     res = {}
-    for name, text in (("layer", base), ("dem", dem)):
+    for name, text in (("layer", layer), ("dem", dem)):
         path = os.path.join(a.out, name + ".json")
+        args = [a.mill, vary, scale] + ([a.layer_set] if name == "layer" and a.layer_set else [])
         if os.path.exists(path):
             res[name] = json.load(open(path))
-            if res[name].get("args") != [a.mill, vary, scale]:
+            if res[name].get("args") != args:
                 sys.exit(f"{path} holds a run of other arguments ({res[name].get('args')}); give another --out")
             continue
         print(f"running {name} ...", file=sys.stderr, flush=True)
         res[name] = compare(a.linerlife, text, a.out, name, vary)
-        res[name]["args"] = [a.mill, vary, scale]
+        res[name]["args"] = args
         tmp = path + ".tmp"
         json.dump(res[name], open(tmp, "w"), indent=1)
         os.replace(tmp, path)
@@ -120,7 +138,8 @@ def main():
     hl = [c["operating_hours"] for c in L]
     hd = [c["operating_hours"] for c in D]
     rl, rd = ranks(hl), ranks(hd)
-    print(f"Mill {a.mill}; the DEM's calibration x {scale:.4g}. Commands (from {a.out}): "
+    print(f"Mill {a.mill}{' (layer: ' + ', '.join(a.layer_set) + ')' if a.layer_set else ''}; "
+          f"the DEM's calibration x {scale:.4g}. Commands (from {a.out}): "
           f"`{res['layer']['command']}` ({res['layer']['wall_s']:.0f} s) and `{res['dem']['command']}` "
           f"({res['dem']['wall_s']:.0f} s).\n")
     print("| design | layer: life [h] | rank | criterion | DEM: life [h] | rank | criterion | layer / DEM |")
