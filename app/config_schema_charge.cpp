@@ -98,6 +98,13 @@ void add_model_keys(Schema& s) {
                               {"off", "on"}, "off",
                               [](Config& c, const std::string& v) { c.model.lifter_slide = v == "on"; },
                               [](const Config& c) { return std::string(c.model.lifter_slide ? "on" : "off"); }));
+  s.keys.push_back(string_key("model", "pocket_loads",
+                              "Layer model: the lifter face holding a pocket carries the tangential weight of the "
+                              "charge over it (normal load on the face, not shear on the plate); off: every column "
+                              "loads the liner under it, as in the thesis",
+                              {"off", "on"}, "off",
+                              [](Config& c, const std::string& v) { c.model.pocket_loads = v == "on"; },
+                              [](const Config& c) { return std::string(c.model.pocket_loads ? "on" : "off"); }));
   s.keys.push_back(string_key("model", "slurry_drag",
                               "Drag of the slurry pool on flights (thesis Appendix C); overflow mills only",
                               {"off", "on"}, "off",

@@ -39,6 +39,8 @@ struct ModelSpec {
   double repose_angle_deg = 35.0;       // [deg] dynamic angle of repose: foot stability and V-1.1 clipping
   bool slurry_drag = false;             // drag of the slurry pool on flights (overflow mills only)
   bool lifter_slide = false;            // balls slide out along the lifter face before flying (Powell 1991)
+  bool pocket_loads = false;            // layer model: the lifter faces carry the tangential weight of the charge
+                                        //     in the pockets (docs/models/layer.md §7, "Pocket loads")
   double settle_revolutions = 1.0;      // [-] revolutions run before averaging starts (docs/models/layer.md §Settling)
   std::string initial_phases = "staggered";  // layer model at t = 0: "staggered" (each layer turned by a different
                                              //     fraction of its slot) | "aligned" (slot 0 of every layer at angle 0)

@@ -32,6 +32,10 @@ namespace {
 using V = Eigen::Vector2d;
 constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Pocket loads: an element of the profile takes a share of a pocket's push
+// only if it faces the push, at most this far from the radial (docs/models/layer.md
+// §7, "Pocket loads"; lifter faces of 0-60 deg and their rounded corners)
+constexpr double kPocketFaceDeg = 80.0;
 
 constexpr double kInvTwoPi = 1.0 / kTwoPi;
 
@@ -377,6 +381,22 @@ class LayerSim {
   long long n_flights_ = 0;
   // loads, canonical element index
   std::vector<double> acc_N_, acc_Nc_, acc_Ng_, acc_S_, acc_NV_, acc_SV_;
+  // pocket loads (ModelSpec::pocket_loads; docs/models/layer.md §7, "Pocket
+  // loads"): per direction (0: the column pushes against the rotation, onto
+  // the face behind it; 1: with the rotation, onto the face ahead) and ride
+  // bin, how many layers a face holds there, and for each of those layers the
+  // face elements that take its tangential force per newton of it
+  struct PocketShare {
+    int element;
+    double kn, ks;    // normal and shear force on the element per N of tangential force
+    double r;         // [m] ride radius there (the slip speed's radius)
+    V lifter;         // force on segment 0's elements per N (liner frame; lifter forces)
+  };
+  void setup_pocket_loads();
+  std::vector<int> pocket_depth_[2];          // [dir][bin]
+  std::vector<int> pocket_begin_[2];          // [dir][bin * pocket_layers_ + q], one past the end at the back
+  std::vector<PocketShare> pocket_share_[2];  // [dir][...]
+  int pocket_layers_ = 0;                     // most layers a face holds anywhere
   std::vector<ImpactEvent> impacts_;
   std::vector<double> lifter_n_, lifter_t_;  // per 2-degree bin of lifter 0's angle
   std::vector<int> lifter_cnt_;
@@ -500,6 +520,7 @@ void LayerSim::setup_geometry() {
                                  "across the radius",
                                  in_.model.element_size_diameters, d_, 2 * R_eff_));
   ride_ = build_liner_ride_table(canon_.surface, a_, 4);
+  if (in_.model.pocket_loads) setup_pocket_loads();
   phi_ = in_.mill.speed_rpm / critical_speed_rpm(2 * R_eff_);
   const ChargeSpec& c = in_.charge;
   // Densities (Morrell 1996): the charge bulk density sets the element mass.
@@ -512,6 +533,87 @@ void LayerSim::setup_geometry() {
   rho_solid_ = (c.ball_filling * c.ball_density_kg_m3 + (J_ - c.ball_filling) * c.ore_density_kg_m3) / J_;
   m_sphere_ = kPi / 6.0 * d_ball_ * d_ball_ * d_ball_ * rho_solid_;
   if (c.discharge == Discharge::Overflow) y_pool_ = -c.trunnion_radius_m;  // slurry at the trunnion (Morrell 1996)
+}
+
+void LayerSim::setup_pocket_loads() {
+  // Pocket loads (docs/models/layer.md §7, "Pocket loads"). Between two
+  // lifters the charge sits in a pocket: the face behind it pushes it up the
+  // rising side, the face ahead holds it on the falling side. So the
+  // tangential force of a column over a pocket (thesis eq. 4.11, W g cos
+  // theta) is a normal load on that face, not shear on the plate. Layer q of
+  // the column, whose element sits one diameter per layer above the ride
+  // radius of its bin b, presses on the face where the ride radius, walking
+  // from b towards the face, first falls below its own radius (by a tenth of a
+  // diameter, a real step of the profile); its force is spread evenly over
+  // the bins of the next diameter of the face's height (balls in a pocket do
+  // not sit in exact stacks). A layer no face holds within one segment (above
+  // the crest, or on a lifter's top) ends the pocket's depth. Built once per
+  // run from the ride table, so a worn profile has its own pockets.
+  const int nb = ride_.n_bins;
+  const int seg_bins = std::max(1, static_cast<int>(std::ceil(static_cast<double>(nb) / canon_.surface.segments)));
+  pocket_layers_ = static_cast<int>(std::ceil((ride_.max_ride_m - ride_.min_ride_m) / d_)) + 1;
+  const int seg0 = canon_.segment_of_physical_0;
+  const double cos_face_max = std::cos(kPocketFaceDeg * kPi / 180.0);
+  std::vector<int> band;  // ride bins
+  for (int dir = 0; dir < 2; ++dir) {
+    const int step = dir == 0 ? -1 : 1;
+    const double sign = dir == 0 ? 1.0 : -1.0;  // the force on the face is sign |T| e_t
+    pocket_depth_[dir].assign(nb, 0);
+    pocket_begin_[dir].assign(static_cast<size_t>(nb) * pocket_layers_ + 1, 0);
+    pocket_share_[dir].clear();
+    for (int b = 0; b < nb; ++b) {
+      int depth = 0;
+      for (int q = 0; q < pocket_layers_; ++q) {
+        pocket_begin_[dir][static_cast<size_t>(b) * pocket_layers_ + q] = static_cast<int>(pocket_share_[dir].size());
+        if (depth < q) continue;  // the pocket ended below
+        const double rho = ride_.ride_radius_m[b] - q * d_;
+        int first = -1;
+        for (int i = 1; i <= seg_bins && first < 0; ++i) {
+          const int bb = ((b + step * i) % nb + nb) % nb;
+          if (ride_.ride_radius_m[bb] < rho - 0.1 * d_) first = bb;
+        }
+        if (first < 0) continue;
+        // the band: the bins of the next diameter of the face's height whose
+        // element faces the push, along the ring there (at most
+        // kPocketFaceDeg from the radial: a plate or crest element touched by
+        // the same disc takes none of it)
+        band.clear();
+        for (int i = 0; i < seg_bins; ++i) {
+          const int bb = ((first + step * i) % nb + nb) % nb;
+          if (i > 0 && !(ride_.ride_radius_m[bb] > rho - d_)) break;
+          const double psi = (bb + 0.5) * ride_.bin_rad;
+          const V et(-std::sin(psi), std::cos(psi));
+          if (sign * et.dot(canon_.surface.normal[ride_.support_element[bb]]) >= cos_face_max) band.push_back(bb);
+        }
+        if (band.empty()) continue;  // no face takes it: the pocket ends
+        const size_t start = pocket_share_[dir].size();
+        const double f = 1.0 / band.size();
+        for (const int bb : band) {
+          const int e = ride_.support_element[bb];
+          const V& n = canon_.surface.normal[e];  // into the mill
+          const double psi = (bb + 0.5) * ride_.bin_rad;
+          const V et(-std::sin(psi), std::cos(psi));
+          const double kn = sign * et.dot(n) * f;
+          const double ks = std::abs(et.x() * n.y() - et.y() * n.x()) * f;
+          const V lift = canon_.surface.element_segment[e] == seg0 ? V(-sign * f * et) : V(0, 0);
+          auto it = std::find_if(pocket_share_[dir].begin() + start, pocket_share_[dir].end(),
+                                 [&](const PocketShare& x) { return x.element == e; });
+          if (it == pocket_share_[dir].end()) {
+            pocket_share_[dir].push_back({e, kn, ks, ride_.ride_radius_m[bb] * kn, lift});
+          } else {
+            it->kn += kn;
+            it->ks += ks;
+            it->r += ride_.ride_radius_m[bb] * kn;
+            it->lifter += lift;
+          }
+        }
+        for (auto it = pocket_share_[dir].begin() + start; it != pocket_share_[dir].end(); ++it) it->r /= it->kn;
+        depth = q + 1;
+      }
+      pocket_depth_[dir][b] = depth;
+    }
+    pocket_begin_[dir].back() = static_cast<int>(pocket_share_[dir].size());
+  }
 }
 
 void LayerSim::layout_slots() {
@@ -1856,11 +1958,46 @@ void LayerSim::sample(double tau, double w) {
     const V er(c, sn), et(-sn, c);
     const double Fr_g = -W * kGravity * sn;  // outward radial gravity (eq. 4.10 / 5.2)
     const double Ft = W * kGravity * c;      // along the rotation, held by the liner (eq. 4.11)
-    const V F = (C + Fr_g) * er - Ft * et;   // force of the column on the liner
+    V F = (C + Fr_g) * er - Ft * et;         // force of the column on the liner
     // liner frame angle of the slot: atan2 of the rotated direction
     const double psi = fast_atan2(sn * cr - c * sr, c * cr + sn * sr);
     const int b = ride_.bin(psi);
     const int e = ride_.support_element[b];
+    if (pocket_layers_ > 0 && Ft != 0) {
+      // pocket loads (setup_pocket_loads()): the faces holding the pocket
+      // take the tangential force of the `depth` layers in it, each its own;
+      // the layers above slide over the pocket (their own speeds, §2) and
+      // pass it their tangential force up to Coulomb's limit mu N, N their
+      // radial load on it, shared equally by the pocket's layers; the liner
+      // under the column keeps the rest as shear
+      const int dir = Ft > 0 ? 0 : 1;
+      const int depth = std::min(n, pocket_depth_[dir][b]);
+      if (depth > 0) {
+        const double gc = kGravity * std::abs(c);
+        const double W_above = col_mass_[n] - col_mass_[depth];
+        const double N_above = (col_centrifugal_[n] - col_centrifugal_[depth]) - W_above * kGravity * sn;
+        const double T_above = std::min(gc * W_above, mu_ * std::max(0.0, N_above));
+        const double above = T_above / depth;
+        const std::vector<PocketShare>& sh = pocket_share_[dir];
+        const int* begin = &pocket_begin_[dir][static_cast<size_t>(b) * pocket_layers_];
+        V to_lifter(0, 0);  // liner frame
+        for (int q = 0; q < depth; ++q) {
+          const double T = gc * (col_mass_[q + 1] - col_mass_[q]) + above;
+          for (int i = begin[q]; i < begin[q + 1]; ++i) {
+            const PocketShare& x = sh[i];
+            const double Nf = T * x.kn, Sf = T * x.ks, v = vslip_w * x.r;
+            acc_N_[x.element] += Nf * w;
+            acc_Ng_[x.element] += Nf * w;
+            acc_S_[x.element] += Sf * w;
+            acc_NV_[x.element] += Nf * v * w;
+            acc_SV_[x.element] += Sf * v * w;
+            to_lifter += T * x.lifter;
+          }
+        }
+        f_lifter += V(cr * to_lifter.x() - sr * to_lifter.y(), sr * to_lifter.x() + cr * to_lifter.y());
+        F = (C + Fr_g) * er - (Ft > 0 ? 1.0 : -1.0) * (gc * W_above - T_above) * et;
+      }
+    }
     const V& nl = canon_.surface.normal[e];
     const V nrm(cr * nl.x() - sr * nl.y(), sr * nl.x() + cr * nl.y());
     const double N = -F.dot(nrm);

@@ -327,6 +327,19 @@ TEST_CASE("an unknown layer-model start is refused naming the key, value and the
   fs::remove_all(dir);
 }
 
+TEST_CASE("pocket loads other than on or off are refused naming the key, value and the allowed ones", "[app][cli][input]") {
+  const fs::path dir = temp_dir("pocket_loads");
+  write_file(dir / "pocket.toml", defaults_with("pocket_loads = ", "pocket_loads = \"yes\""));
+  const RunResult r = run_linerlife("forecast " + (dir / "pocket.toml").string() + " --out " + (dir / "out").string(), 30);
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK(!fs::exists(dir / "out"));
+  CHECK_THAT(r.err, Catch::Contains((dir / "pocket.toml").string() + ":"));
+  CHECK_THAT(r.err, Catch::Contains("pocket_loads = \"yes\""));
+  CHECK_THAT(r.err, Catch::Contains("\"off\", \"on\""));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("a relaxation interval out of range is refused naming the key, value and range", "[app][cli][input]") {
   const fs::path dir = temp_dir("relaxation_interval");
   for (const char* v : {"0.0", "5.0"}) {

@@ -79,6 +79,9 @@ TEST_CASE("a clockwise mill is the mirror image of the anticlockwise one", "[cha
   const double pocket = GENERATE(-1.0, 0.0);
   INFO("held_pocket_balls " << pocket);
   c.model.held_pocket_balls = pocket;
+  // and the pocket loads (docs/models/layer.md §7): which face takes the push
+  c.model.pocket_loads = GENERATE(false, true);
+  INFO("pocket_loads " << c.model.pocket_loads);
   const LinerSurface s_ccw = build_liner_surface(c.mill, c.liner);
   ChargeInput in = charge_input(c, s_ccw, 2);
   const ChargeResult a = run_model("layer", in);
