@@ -229,6 +229,16 @@ TEST_CASE("compare of lifter designs by the layer model says its ranking is to b
   CHECK(design_ranking_caveat({&base, &mesh, &hard}).empty());
   CHECK(design_ranking_caveat({&dem, &dem_taller}).empty());
   CHECK(design_ranking_caveat({&base}).empty());
+  // the thesis' release names the slide launch as the ball mill's better screen;
+  // with the slide on in every layer case, the note is about the slide
+  CHECK(c.find("lifter_slide = \"on\" 12 of 15") != std::string::npos);
+  Config slide = base, slide_taller = taller;
+  slide.model.lifter_slide = slide_taller.model.lifter_slide = true;
+  const std::string s = design_ranking_caveat({&slide, &slide_taller});
+  CHECK(s.find("with lifter_slide = \"on\" ordered the example ball mill's six lifter designs") != std::string::npos);
+  CHECK(s.find("charge = \"dem\"") != std::string::npos);
+  CHECK(design_ranking_caveat({&slide, &taller}) == c);  // one case with the thesis' release: that note
+  CHECK(design_ranking_caveat({&slide, &dem_taller}) == s);  // the DEM's case has no release of its own
 }
 
 TEST_CASE("compare with two --vary forecasts every combination of their values", "[app][cli][compare]") {
