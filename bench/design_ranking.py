@@ -111,7 +111,8 @@ def main():
         try:
             float(value)
         except ValueError:
-            value = f'"{value}"'
+            if not value.startswith('"'):
+                value = f'"{value}"'
         layer = set_key(layer, section, name, value)
     dem = set_key(set_key(base, "model", "charge", '"dem"'), "dem", "threads", "2")
     dem = set_key(set_key(dem, "forecast", "revolutions_per_drive", "2"), "forecast", "refresh_tol_m", "0.008")
@@ -120,7 +121,7 @@ def main():
     res = {}
     for name, text in (("layer", layer), ("dem", dem)):
         path = os.path.join(a.out, name + ".json")
-        args = [a.mill, vary, scale] + ([a.layer_set] if name == "layer" and a.layer_set else [])
+        args = [a.mill, vary, scale] + ([sorted(a.layer_set)] if name == "layer" and a.layer_set else [])
         if os.path.exists(path):
             res[name] = json.load(open(path))
             if res[name].get("args") != args:

@@ -32,9 +32,9 @@ namespace {
 using V = Eigen::Vector2d;
 constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// Pocket loads: an element of the profile takes a share of a pocket's push
-// only if it faces the push, at most this far from the radial (docs/models/layer.md
-// §7, "Pocket loads"; lifter faces of 0-60 deg and their rounded corners)
+// Pocket loads: the liner takes a share of a pocket's push where the disc's
+// contact faces it, the face at most this far from the radial
+// (docs/models/layer.md §7, "Pocket loads"; lifter faces of 0-60 deg and their corners)
 constexpr double kPocketFaceDeg = 80.0;
 
 constexpr double kInvTwoPi = 1.0 / kTwoPi;
@@ -553,11 +553,25 @@ void LayerSim::setup_pocket_loads() {
   const int seg_bins = std::max(1, static_cast<int>(std::ceil(static_cast<double>(nb) / canon_.surface.segments)));
   pocket_layers_ = static_cast<int>(std::ceil((ride_.max_ride_m - ride_.min_ride_m) / d_)) + 1;
   const int seg0 = canon_.segment_of_physical_0;
-  const double cos_face_max = std::cos(kPocketFaceDeg * kPi / 180.0);
+  const double cos_face_max = std::cos(kPocketFaceDeg * kPi / 180.0);  // the contact normal within this of e_t
+  // the direction of the liner's push on a disc resting at bin bb's centre:
+  // from the nearest point of the touched element to the disc's centre (the
+  // element's normal on a face, the bisecting direction on a corner)
+  const LinerSurface& sf = canon_.surface;
+  auto contact_normal = [&](int bb) {
+    const double psi = (bb + 0.5) * ride_.bin_rad;
+    const V c = ride_.ride_radius_m[bb] * V(std::cos(psi), std::sin(psi));
+    const int e = ride_.support_element[bb];
+    const V a = sf.nodes[e], ab = sf.nodes[sf.next(e)] - a;
+    const double t = std::clamp((c - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    const V d = c - (a + t * ab);
+    const double len = d.norm();
+    return len > 1e-12 ? V(d / len) : sf.normal[e];
+  };
   std::vector<int> band;  // ride bins
   for (int dir = 0; dir < 2; ++dir) {
     const int step = dir == 0 ? -1 : 1;
-    const double sign = dir == 0 ? 1.0 : -1.0;  // the force on the face is sign |T| e_t
+    const double sign = dir == 0 ? 1.0 : -1.0;  // the push on the face is -sign |T| e_t
     pocket_depth_[dir].assign(nb, 0);
     pocket_begin_[dir].assign(static_cast<size_t>(nb) * pocket_layers_ + 1, 0);
     pocket_share_[dir].clear();
@@ -573,24 +587,26 @@ void LayerSim::setup_pocket_loads() {
           if (ride_.ride_radius_m[bb] < rho - 0.1 * d_) first = bb;
         }
         if (first < 0) continue;
-        // the band: the bins of the next diameter of the face's height whose
-        // element faces the push, along the ring there (at most
-        // kPocketFaceDeg from the radial: a plate or crest element touched by
-        // the same disc takes none of it)
+        // the band: the bins of the next diameter of the face's height where
+        // the disc's contact faces the push, along the ring there (the contact
+        // normal, from the touched point to the disc's centre, at most
+        // kPocketFaceDeg from the tangent: a disc resting on the plate or on
+        // a crest takes none of it; one on a sharp crest corner does, whichever
+        // of the two elements meeting there the ride table names)
         band.clear();
         for (int i = 0; i < seg_bins; ++i) {
           const int bb = ((first + step * i) % nb + nb) % nb;
           if (i > 0 && !(ride_.ride_radius_m[bb] > rho - d_)) break;
           const double psi = (bb + 0.5) * ride_.bin_rad;
           const V et(-std::sin(psi), std::cos(psi));
-          if (sign * et.dot(canon_.surface.normal[ride_.support_element[bb]]) >= cos_face_max) band.push_back(bb);
+          if (sign * et.dot(contact_normal(bb)) >= cos_face_max) band.push_back(bb);
         }
         if (band.empty()) continue;  // no face takes it: the pocket ends
         const size_t start = pocket_share_[dir].size();
         const double f = 1.0 / band.size();
         for (const int bb : band) {
           const int e = ride_.support_element[bb];
-          const V& n = canon_.surface.normal[e];  // into the mill
+          const V n = contact_normal(bb);  // into the mill
           const double psi = (bb + 0.5) * ride_.bin_rad;
           const V et(-std::sin(psi), std::cos(psi));
           const double kn = sign * et.dot(n) * f;

@@ -3,6 +3,7 @@
 // tangential weight of the charge over them. Checked against force balance on
 // a lifter of known face angle, on a plain shell (no face: nothing moves), and
 // against the run without them (the charge itself must not change).
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -18,19 +19,22 @@ using namespace linerlife::test;
 namespace {
 
 /// Sums of the time-averaged loads over the plate (normal within 2 deg of the
-/// radial, at the largest radius) and over the faces (normal turned more
-/// than 30 deg towards the tangent), per metre of mill.
+/// radial, at the shell's largest radius: not the lifter tops), over the
+/// faces (normal turned more than 30 deg towards the tangent), split into
+/// the leading faces (facing the rotation) and the trailing ones, per metre
+/// of mill.
 struct Parts {
-  double plate_n = 0, plate_s = 0, face_n = 0, all_n = 0;
+  double plate_n = 0, plate_s = 0, face_n = 0, lead_n = 0, trail_n = 0, all_n = 0;
 };
 
-Parts parts(const LinerSurface& s, const LinerLoads& L) {
+Parts parts(const LinerSurface& s, const LinerLoads& L, Rotation rot) {
   double r_max = 0;
   for (int e = 0; e < s.n_elements(); ++e) r_max = std::max(r_max, s.midpoint[e].norm());
+  const double turn = rot == Rotation::Ccw ? 1.0 : -1.0;
   Parts p;
   for (int e = 0; e < s.n_elements(); ++e) {
     const Eigen::Vector2d m = s.midpoint[e];
-    const Eigen::Vector2d er = m.normalized();
+    const Eigen::Vector2d er = m.normalized(), et = turn * Eigen::Vector2d(-er.y(), er.x());
     const double radial = -s.normal[e].dot(er);  // the normal points into the mill
     p.all_n += L.normal_force_n_per_m[e];
     if (radial > std::cos(2.0 * kPi / 180.0) && m.norm() > r_max - 0.002) {
@@ -38,6 +42,7 @@ Parts parts(const LinerSurface& s, const LinerLoads& L) {
       p.plate_s += L.shear_force_n_per_m[e];
     } else if (radial < std::cos(30.0 * kPi / 180.0)) {
       p.face_n += L.normal_force_n_per_m[e];
+      (s.normal[e].dot(et) > 0 ? p.lead_n : p.trail_n) += L.normal_force_n_per_m[e];
     }
   }
   return p;
@@ -47,7 +52,7 @@ Parts parts(const LinerSurface& s, const LinerLoads& L) {
 
 TEST_CASE("pocket loads put the charge's tangential weight on the lifter faces, not the plate", "[charge][layer]") {
   // The bundled ball mill: straight 30 deg faces, sharp corners, 0.12 m
-  // lifters (2.4 media diameters: two layers in each pocket).
+  // lifters (2.4 media diameters: up to three layers in a pocket).
   Config c = mill_config("ball_mill_5m.toml");
   REQUIRE(c.liner.design.face_angle_leading_deg == 30.0);
   REQUIRE(c.liner.design.face_angle_trailing_deg == 30.0);
@@ -63,26 +68,54 @@ TEST_CASE("pocket loads put the charge's tangential weight on the lifter faces, 
   CHECK(on.indicators.toe_deg == off.indicators.toe_deg);
   CHECK(on.indicators.shoulder_deg == off.indicators.shoulder_deg);
   CHECK(on.loads.impacts.size() == off.loads.impacts.size());
-  const Parts a = parts(s, off.loads), b = parts(s, on.loads);
+  const Parts a = parts(s, off.loads, c.mill.rotation), b = parts(s, on.loads, c.mill.rotation);
   INFO("plate N " << a.plate_n << " -> " << b.plate_n << ", plate S " << a.plate_s << " -> " << b.plate_s
-                  << ", faces N " << a.face_n << " -> " << b.face_n << " N/m");
+                  << ", leading faces N " << a.lead_n << " -> " << b.lead_n << ", trailing " << a.trail_n << " -> "
+                  << b.trail_n << " N/m");
   REQUIRE(a.plate_s > 0);
   // the plate keeps its radial load (its normal is radial: the tangential
   // force never pressed on it) and loses shear: the pocket layers' own
-  // tangential weight, and the layers' above up to mu N
+  // tangential weight and the layers' above up to mu N (0.43 of it is left
+  // when written: what the layers above cannot pass on)
   CHECK(b.plate_n == Approx(a.plate_n).epsilon(1e-3));
   CHECK(b.plate_s < 0.7 * a.plate_s);
   // force balance: a tangential force T taken off the plate presses on a 30
   // deg face with T cos 30 deg; the faces also take the pushes of the columns
-  // standing on them, so at least that much arrives
+  // standing on them, so at least that much arrives; of what the liner gains
+  // in normal load the faces take nearly all, the crest corners touched by a
+  // disc above a face the rest (93 % on the faces when written)
   const double taken = a.plate_s - b.plate_s;
   CHECK(b.face_n - a.face_n >= 0.99 * std::cos(30.0 * kPi / 180.0) * taken);
-  // ... and no more than every column's tangential weight (the shear of all
-  // the liner without pocket loads bounds it)
-  double all_s = 0;
-  for (const double x : off.loads.shear_force_n_per_m) all_s += x;
-  CHECK(b.face_n - a.face_n <= all_s);
-  CHECK(b.all_n - a.all_n == Approx(b.face_n - a.face_n).epsilon(0.01));
+  CHECK(b.face_n - a.face_n > 0.9 * (b.all_n - a.all_n));
+  // which face: the bed lies on the rising side, where the leading face of
+  // the lifter behind pushes the pocket; the trailing faces hold the pockets
+  // of the falling side, the toe's few (2.8 times as much to the leading
+  // faces when written; a push sent the wrong way round gives the reverse)
+  CHECK(b.lead_n - a.lead_n > 1.5 * (b.trail_n - a.trail_n));
+  CHECK(b.trail_n > a.trail_n);
+}
+
+TEST_CASE("pocket loads reach the corner of a bar lifter lower than a ball", "[charge][layer]") {
+  // Pilot test 6: 25 mm square bars (5 deg faces, sharp corners) and 50 mm
+  // balls, a clockwise mill. The ball in a pocket touches the bar's crest
+  // corner, where the ride table names the crest's element or the face's:
+  // the push is judged by the contact's direction, so both sides of the
+  // mill load the bars (the rising side, which holds most of the bed, takes
+  // 76 % of the plate's shear off when written; judged by the element's
+  // normal, the rising side found no face at all).
+  const Config c = mill_config("pilot_test_06.toml");
+  REQUIRE(c.mill.rotation == Rotation::Cw);
+  REQUIRE(c.liner.design.lifter_height_m < c.charge.ball_diameter_m);
+  const LinerSurface s = build_liner_surface(c.mill, c.liner);
+  ChargeInput in = charge_input(c, s, 2, 1);
+  const ChargeResult off = run_model("layer", in);
+  in.model.pocket_loads = true;
+  const ChargeResult on = run_model("layer", in);
+  const Parts a = parts(s, off.loads, c.mill.rotation), b = parts(s, on.loads, c.mill.rotation);
+  INFO("plate S " << a.plate_s << " -> " << b.plate_s << ", all N " << a.all_n << " -> " << b.all_n << " N/m");
+  REQUIRE(a.plate_s > 0);
+  CHECK(b.plate_s < 0.5 * a.plate_s);
+  CHECK(b.all_n > a.all_n);
 }
 
 TEST_CASE("pocket loads change nothing on a plain shell", "[charge][layer]") {
@@ -117,11 +150,13 @@ TEST_CASE("pocket loads find the faces of a worn lifter", "[charge][layer][worn]
   in.model.pocket_loads = true;
   const ChargeResult on = run_model("layer", in);
   CHECK(on.indicators.net_power_kw == off.indicators.net_power_kw);
-  const Parts a = parts(s, off.loads), b = parts(s, on.loads);
+  const Parts a = parts(s, off.loads, c.mill.rotation), b = parts(s, on.loads, c.mill.rotation);
   INFO("faces N " << a.face_n << " -> " << b.face_n << ", all N " << a.all_n << " -> " << b.all_n << " N/m");
-  // the worn faces take the push: their normal load rises, and most of what
-  // is added lands on the steep part of the face (more than 30 deg from the
-  // radial; the rest on its flatter foot and crest: 75 % when written)
-  CHECK(b.face_n > 1.2 * a.face_n);
-  CHECK(b.face_n - a.face_n > 0.6 * (b.all_n - a.all_n));
+  // the worn faces take the push: their normal load rises (by 20 % when
+  // written; their own columns' load is most of it), and most of what is
+  // added lands where the face stands less than 60 deg from the radial (63 %
+  // when written; the rest where the worn face lies flatter, and on the
+  // crest corners)
+  CHECK(b.face_n > 1.1 * a.face_n);
+  CHECK(b.face_n - a.face_n > 0.5 * (b.all_n - a.all_n));
 }
