@@ -25,6 +25,7 @@ import time
 import tomllib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from ball_mill import save  # noqa: E402
 from speed_accuracy import NBINS, REF, binned, wear_shape_err  # noqa: E402
 from toml_edit import set_key  # noqa: E402
 
@@ -82,9 +83,7 @@ def main():
             open(f, "w").write(set_key(text, "model", "pocket_loads", f'"{pocket}"'))
             print(f"running {name} ...", file=sys.stderr, flush=True)
             cache[name] = run(a.binary, f, args)
-            tmp = path + ".tmp"
-            json.dump(cache, open(tmp, "w"))
-            os.replace(tmp, path)
+            save(cache, path)
 
     print("| mill | lifter height / ball diameter | wear shape error, pocket loads off [%] | on [%] | "
           "mass-loss rate on / off | impact share of the wear, off / on | DEM impact share |")

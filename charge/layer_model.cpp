@@ -393,6 +393,10 @@ class LayerSim {
     V lifter;         // force on segment 0's elements per N (liner frame; lifter forces)
   };
   void setup_pocket_loads();
+  /// The pocket loads of the column of n layers over ride bin b (sample()):
+  /// accumulates the faces' share, returns the force left under the column.
+  __attribute__((noinline)) V pocket_push(int b, int n, double c, double sn, double C, double Fr_g, const V& er,
+                                          const V& et, double w, double vslip_w, double cr, double sr, V& f_lifter);
   std::vector<int> pocket_depth_[2];          // [dir][bin]
   std::vector<int> pocket_begin_[2];          // [dir][bin * pocket_layers_ + q], one past the end at the back
   std::vector<PocketShare> pocket_share_[2];  // [dir][...]
@@ -1944,6 +1948,43 @@ double LayerSim::bed_clearance(double r, double theta, double tau) const {
   return best;
 }
 
+V LayerSim::pocket_push(int b, int n, double c, double sn, double C, double Fr_g, const V& er, const V& et, double w,
+                        double vslip_w, double cr, double sr, V& f_lifter) {
+  // Pocket loads (setup_pocket_loads()): the faces holding the pocket take
+  // the tangential force of the `depth` layers in it, each its own; the
+  // layers above rest on the pocket and pass it their tangential force up to
+  // Coulomb's limit mu N, N their radial load on it, shared equally by the
+  // pocket's layers; the liner under the column keeps the rest as shear.
+  // Returns the force left on the liner under the column.
+  const double Ft = col_mass_[n] * kGravity * c;
+  const int dir = Ft > 0 ? 0 : 1;
+  const int depth = std::min(n, pocket_depth_[dir][b]);
+  if (depth == 0) return (C + Fr_g) * er - Ft * et;
+  const double gc = kGravity * std::abs(c);
+  const double W_above = col_mass_[n] - col_mass_[depth];
+  const double N_above = (col_centrifugal_[n] - col_centrifugal_[depth]) - W_above * kGravity * sn;
+  const double T_above = std::min(gc * W_above, mu_ * std::max(0.0, N_above));
+  const double above = T_above / depth;
+  const std::vector<PocketShare>& sh = pocket_share_[dir];
+  const int* begin = &pocket_begin_[dir][static_cast<size_t>(b) * pocket_layers_];
+  V to_lifter(0, 0);  // liner frame
+  for (int q = 0; q < depth; ++q) {
+    const double T = gc * (col_mass_[q + 1] - col_mass_[q]) + above;
+    for (int i = begin[q]; i < begin[q + 1]; ++i) {
+      const PocketShare& x = sh[i];
+      const double Nf = T * x.kn, Sf = T * x.ks, v = vslip_w * x.r;
+      acc_N_[x.element] += Nf * w;
+      acc_Ng_[x.element] += Nf * w;
+      acc_S_[x.element] += Sf * w;
+      acc_NV_[x.element] += Nf * v * w;
+      acc_SV_[x.element] += Sf * v * w;
+      to_lifter += T * x.lifter;
+    }
+  }
+  f_lifter += V(cr * to_lifter.x() - sr * to_lifter.y(), sr * to_lifter.x() + cr * to_lifter.y());
+  return (C + Fr_g) * er - (Ft > 0 ? 1.0 : -1.0) * (gc * W_above - T_above) * et;
+}
+
 void LayerSim::sample(double tau, double w) {
   const double rot = mill_angle(tau);
   // --- flying elements, for the occupancy indicators (the en-masse ones
@@ -1974,46 +2015,15 @@ void LayerSim::sample(double tau, double w) {
     const V er(c, sn), et(-sn, c);
     const double Fr_g = -W * kGravity * sn;  // outward radial gravity (eq. 4.10 / 5.2)
     const double Ft = W * kGravity * c;      // along the rotation, held by the liner (eq. 4.11)
-    V F = (C + Fr_g) * er - Ft * et;         // force of the column on the liner
     // liner frame angle of the slot: atan2 of the rotated direction
     const double psi = fast_atan2(sn * cr - c * sr, c * cr + sn * sr);
     const int b = ride_.bin(psi);
     const int e = ride_.support_element[b];
-    if (pocket_layers_ > 0 && Ft != 0) {
-      // pocket loads (setup_pocket_loads()): the faces holding the pocket
-      // take the tangential force of the `depth` layers in it, each its own;
-      // the layers above slide over the pocket (their own speeds, §2) and
-      // pass it their tangential force up to Coulomb's limit mu N, N their
-      // radial load on it, shared equally by the pocket's layers; the liner
-      // under the column keeps the rest as shear
-      const int dir = Ft > 0 ? 0 : 1;
-      const int depth = std::min(n, pocket_depth_[dir][b]);
-      if (depth > 0) {
-        const double gc = kGravity * std::abs(c);
-        const double W_above = col_mass_[n] - col_mass_[depth];
-        const double N_above = (col_centrifugal_[n] - col_centrifugal_[depth]) - W_above * kGravity * sn;
-        const double T_above = std::min(gc * W_above, mu_ * std::max(0.0, N_above));
-        const double above = T_above / depth;
-        const std::vector<PocketShare>& sh = pocket_share_[dir];
-        const int* begin = &pocket_begin_[dir][static_cast<size_t>(b) * pocket_layers_];
-        V to_lifter(0, 0);  // liner frame
-        for (int q = 0; q < depth; ++q) {
-          const double T = gc * (col_mass_[q + 1] - col_mass_[q]) + above;
-          for (int i = begin[q]; i < begin[q + 1]; ++i) {
-            const PocketShare& x = sh[i];
-            const double Nf = T * x.kn, Sf = T * x.ks, v = vslip_w * x.r;
-            acc_N_[x.element] += Nf * w;
-            acc_Ng_[x.element] += Nf * w;
-            acc_S_[x.element] += Sf * w;
-            acc_NV_[x.element] += Nf * v * w;
-            acc_SV_[x.element] += Sf * v * w;
-            to_lifter += T * x.lifter;
-          }
-        }
-        f_lifter += V(cr * to_lifter.x() - sr * to_lifter.y(), sr * to_lifter.x() + cr * to_lifter.y());
-        F = (C + Fr_g) * er - (Ft > 0 ? 1.0 : -1.0) * (gc * W_above - T_above) * et;
-      }
-    }
+    // force of the column on the liner; with pocket loads the faces holding
+    // the pocket take some of its tangential part (a call of its own, so that
+    // the default loop keeps its code)
+    const V F = pocket_layers_ > 0 && Ft != 0 ? pocket_push(b, n, c, sn, C, Fr_g, er, et, w, vslip_w, cr, sr, f_lifter)
+                                              : V((C + Fr_g) * er - Ft * et);
     const V& nl = canon_.surface.normal[e];
     const V nrm(cr * nl.x() - sr * nl.y(), sr * nl.x() + cr * nl.y());
     const double N = -F.dot(nrm);
