@@ -38,6 +38,7 @@ struct Case {
   std::string label;
   Config config;
   std::string origin{};  // --vary: "--vary K1=V1 --vary K2=V2", what config_with() set
+  std::vector<std::pair<std::string, std::string>> varied{};  // --vary: (key, value) in --vary order
   ForecastResult result;
   double mean_power_kw = 0, final_power_kw = 0, mean_direct_impacts = 0;
   std::string caveat{};  // on the power history (worn_power_caveat())
@@ -133,6 +134,7 @@ std::vector<Case> vary_cases(const Config& base, const std::vector<std::string>&
     for (size_t a = 0; a < axes.size(); ++a) {
       const std::string kv = axes[a].key + "=" + axes[a].values[at[a]];
       k.label += (a ? " " : "") + kv;
+      k.varied.emplace_back(axes[a].key, axes[a].values[at[a]]);
       try {
         k.config = config_with(k.config, axes[a].key, axes[a].values[at[a]], "--vary");
       } catch (const InputError& e) {
@@ -241,6 +243,11 @@ int run_compare(const CompareOptions& o) {
           .set("lifter_height_m_final", last.lifter_height_m)
           .set("face_angle_leading_deg_final", last.face_angle_leading_deg)
           .set("caveats", caveats_json(k.caveat));
+      if (!k.varied.empty()) {
+        Json v = Json::object();
+        for (const auto& kv : k.varied) v.set(kv.first, kv.second);
+        j.set("vary", v);
+      }
       arr.push(j);
     }
     std::cout << Json::object().set("cases", arr).set("caveats", caveats_json(ranking)).dump() << "\n";
@@ -275,11 +282,22 @@ int run_compare(const CompareOptions& o) {
         const std::string g = fmt::format("/cases/{}", i);
         h5.group(g);
         h5.attr(g, "label", k.label);
+        // --vary: the case's values, one line per key of /cases' varied_keys
+        if (!k.varied.empty()) {
+          std::string values;
+          for (size_t a = 0; a < k.varied.size(); ++a) values += (a ? "\n" : "") + k.varied[a].second;
+          h5.attr(g, "varied_values", values);
+        }
         h5.text(g + "/config", config_to_toml(k.config, false));
         write_forecast(h5, g + "/forecast", k.result, k.config.forecast);
         if (!k.caveat.empty()) h5.attr(g + "/forecast", "caveat", k.caveat);  // as forecast.h5's
       }
       h5.attr("/cases", "labels", labels);
+      if (!cases.front().varied.empty()) {  // --vary: every case sets the same keys in the same order
+        std::string keys;
+        for (size_t a = 0; a < cases.front().varied.size(); ++a) keys += (a ? "\n" : "") + cases.front().varied[a].first;
+        h5.attr("/cases", "varied_keys", keys);
+      }
       if (!ranking.empty()) h5.attr("/cases", "caveat", ranking);
       h5.dataset("/cases/operating_hours", hours, {hours.size()}, "h");
       h5.dataset("/cases/mean_net_power_kw", mean_p, {mean_p.size()}, "kW");

@@ -6,7 +6,8 @@ from plot_common import save
 
 
 def vary_keys(labels):
-    """The keys of --vary cases ("sec.key=v sec2.key2=w"), if every case sets the same ones in the same order."""
+    """The keys of --vary cases read off their labels ("sec.key=v sec2.key2=w"), if every case sets the same
+    ones in the same order (a compare.h5 written before the varied_keys attribute)."""
     keys = None
     for label in labels:
         parts = [p.split("=", 1) for p in label.split(" ")]
@@ -22,11 +23,16 @@ def vary_keys(labels):
 def draw(h5, out):
     c = h5["/cases"]
     labels = c.attrs["labels"].split("\n")
-    keys = vary_keys(labels)
     xlabel = ""
-    if keys:  # the values on the ticks, the keys under the axis
-        labels = [" / ".join(p.split("=", 1)[1] for p in x.split(" ")) for x in labels]
+    if "varied_keys" in c.attrs:  # --vary: the values on the ticks, the keys under the axis
+        keys = c.attrs["varied_keys"].split("\n")
+        labels = [" / ".join(c[str(i)].attrs["varied_values"].split("\n")) for i in range(len(labels))]
         xlabel = " / ".join(k.split(".", 1)[1] for k in keys)
+    else:
+        keys = vary_keys(labels)
+        if keys:
+            labels = [" / ".join(p.split("=", 1)[1] for p in x.split(" ")) for x in labels]
+            xlabel = " / ".join(k.split(".", 1)[1] for k in keys)
     hours = np.asarray(c["operating_hours"])
     mean_p = np.asarray(c["mean_net_power_kw"])
     end_p = np.asarray(c["final_net_power_kw"])

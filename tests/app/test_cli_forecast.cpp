@@ -258,6 +258,9 @@ TEST_CASE("compare with two --vary forecasts every combination of their values",
                           "liner.lifter_height_m=0.25 liner.face_angle_leading_deg=15",
                           "liner.lifter_height_m=0.25 liner.face_angle_leading_deg=22"};
   for (size_t i = 0; i < 4; ++i) CHECK(cases[i]["case"].str() == labels[i]);
+  // each case's values by key, as given (not re-formatted)
+  CHECK(cases[1]["vary"]["liner.lifter_height_m"].str() == "0.23");
+  CHECK(cases[1]["vary"]["liner.face_angle_leading_deg"].str() == "22");
   // designs ranked by the layer model: the caveat, once, in the JSON and on stderr
   REQUIRE(j["caveats"].items().size() == 1);
   CHECK(r.err.find(j["caveats"].items()[0]["text"].str()) != std::string::npos);
@@ -283,6 +286,10 @@ TEST_CASE("compare with two --vary forecasts every combination of their values",
   {
     const H5Reader h5((dir / "out" / "compare.h5").string());
     CHECK(h5.attr_string("/cases", "caveat") == j1["caveats"].items()[0]["text"].str());
+    // the varied keys in --vary order and each case's values (the chart's ticks), not parsed from the labels
+    CHECK(h5.attr_string("/cases", "varied_keys") == "liner.face_angle_leading_deg\nliner.lifter_height_m");
+    CHECK(h5.attr_string("/cases/0", "varied_values") == "15\n0.25");
+    CHECK(h5.attr_string("/cases/1", "varied_values") == "22\n0.25");
     size_t with = 0;
     for (size_t i = 0; i < 2; ++i)
       for (const auto& cv : c1[i]["caveats"].items()) {
