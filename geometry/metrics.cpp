@@ -40,6 +40,30 @@ bool first_crossing(const std::vector<V>& p, const std::vector<double>& t, int c
   return false;
 }
 
+/// The same crossing found from the outside in: walks from the segment's end
+/// on side `step` (the plate) towards the crest and returns the first place
+/// where the thickness rises to `level`, as the same pair of vertices (the one
+/// at or above it on the crest's side first). On a face whose thickness falls
+/// steadily from the crest to the plate it is first_crossing()'s point; on a
+/// top that wear has hollowed into a groove deeper than the band (two horns)
+/// it is still on the lifter's flank, where a walk from the higher horn would
+/// go down into the groove. False if the end itself is at or above `level`.
+bool flank_crossing(const std::vector<V>& p, const std::vector<double>& t, int crest, int step, double level, V& where,
+                    int& last_above) {
+  const int end = step > 0 ? static_cast<int>(p.size()) - 1 : 0;
+  if (t[end] >= level) return false;
+  for (int j = end; j != crest; j -= step) {
+    const int i = j - step;
+    if (t[i] >= level) {
+      const double f = (t[i] - level) / (t[i] - t[j]);
+      where = p[i] + f * (p[j] - p[i]);
+      last_above = i;
+      return true;
+    }
+  }
+  return false;
+}
+
 /// A straight line fitted to one lifter face.
 struct FaceFit {
   bool ok = false;
@@ -50,13 +74,18 @@ struct FaceFit {
 /// Fits the face on side `step` from the crest (+1 towards +theta) over the
 /// thickness band [lo, hi] by a length-weighted total least squares line. The
 /// angle is measured from the radial through the fit's centroid, positive when
-/// the face leans away from the lifter towards the plate.
+/// the face leans away from the lifter towards the plate. The band's ends are
+/// found from the plate inwards (flank_crossing(): a grooved top does not
+/// count as the face); where the plate itself is as thick as the band's end,
+/// from the crest outwards (first_crossing()).
 FaceFit fit_face(const std::vector<V>& p, const std::vector<double>& t, int crest, int step, double lo, double hi) {
   FaceFit f;
   V phi, plo;
   int ihi = 0, ilo = 0;
-  if (!first_crossing(p, t, crest, step, hi, phi, ihi)) return f;
-  if (!first_crossing(p, t, crest, step, lo, plo, ilo)) return f;
+  if (!flank_crossing(p, t, crest, step, lo, plo, ilo) || !flank_crossing(p, t, crest, step, hi, phi, ihi)) {
+    if (!first_crossing(p, t, crest, step, hi, phi, ihi)) return f;
+    if (!first_crossing(p, t, crest, step, lo, plo, ilo)) return f;
+  }
   std::vector<V> chain{phi};
   for (int i = ihi + step; step > 0 ? i <= ilo : i >= ilo; i += step) chain.push_back(p[i]);
   chain.push_back(plo);

@@ -63,6 +63,44 @@ TEST_CASE("a worn lifter lays its leading face back and loses height", "[geometr
   CHECK(after.mass_kg_per_m < before.mass_kg_per_m);
 }
 
+TEST_CASE("a top worn into a groove between two horns is not taken for a face", "[geometry][metrics]") {
+  // A V-groove 60 mm deep in the 0.14 m flat top of the Qiu lifter (0.25 m
+  // high), the horns at the top's corners untouched: deeper than the 20 % of
+  // the height above the face-fit band's upper end (50 mm), so a walk from the
+  // higher horn down towards the other side meets the groove's wall first (it
+  // read 33 deg for the 19.3 deg faces). The faces, the height and the top
+  // width are the new lifter's.
+  const Mill mill = qiu_mill();
+  for (const Rotation rot : {Rotation::Ccw, Rotation::Cw}) {
+    const LinerSurface s = build_liner_surface(mill, qiu_liner());
+    const SegmentMetrics before = segment_metrics(s, 0, rot, 7800);
+    std::vector<double> depth(s.n_nodes(), 0.0);
+    double half = 0;  // half the top's arc length at the crest radius
+    for (int i = s.segment_begin[0]; i < s.segment_begin[1]; ++i)
+      if (5.18 - s.nodes[i].norm() > 0.075 + 0.25 - 2e-3) half = std::max(half, std::abs(std::atan2(s.nodes[i].y(), s.nodes[i].x())));
+    REQUIRE(half > 0);
+    for (int i = s.segment_begin[0]; i < s.segment_begin[1]; ++i) {
+      const V& p = s.nodes[i];
+      if (5.18 - p.norm() < 0.075 + 0.25 - 2e-3) continue;  // the top only (a chord: 0.5 mm lower at its ends)
+      // slightly off centre, so one horn stays the higher
+      depth[i] = 0.06 * std::max(0.0, 1.0 - std::abs(std::atan2(p.y(), p.x()) - 0.1 * half) / (0.9 * half));
+    }
+    const RemeshResult r = remesh(s, depth, RemeshOptions{0.01});
+    const SegmentMetrics after = segment_metrics(r.surface, 0, rot, 7800);
+    // the groove is there, deeper than the band's upper end
+    double floor_t = 1e9;
+    for (int i = r.surface.segment_begin[0]; i < r.surface.segment_begin[1]; ++i) {
+      const V& p = r.surface.nodes[i];
+      if (std::abs(std::atan2(p.y(), p.x())) < 0.5 * half) floor_t = std::min(floor_t, 5.18 - p.norm());
+    }
+    REQUIRE(floor_t < 0.075 + 0.8 * 0.25 - 0.005);
+    CHECK(after.lifter_height_m == Approx(before.lifter_height_m).margin(1e-3));
+    CHECK(after.face_angle_leading_deg == Approx(before.face_angle_leading_deg).margin(0.2));
+    CHECK(after.face_angle_trailing_deg == Approx(before.face_angle_trailing_deg).margin(0.2));
+    CHECK(after.top_width_m == Approx(before.top_width_m).margin(0.005));
+  }
+}
+
 namespace {
 
 /// A smooth recession field in space [m]: deeper at the lifter top and on the
