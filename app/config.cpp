@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -235,14 +236,23 @@ void check_and_resolve(Config& c) {
   if (!L.measured && L.design.lifter_height_m > 0) {
     const double R = c.mill.shell_radius_m();
     const double rp = R - L.design.plate_thickness_m;
-    // the base of lifter 0 ends where the thickness first exceeds the plate level
-    double half_base = 0;
-    for (int i = surface.segment_begin[0]; i < surface.segment_begin[1]; ++i) {
-      const auto& q = surface.nodes[i];
-      if (R - q.norm() > L.design.plate_thickness_m + 1e-9)
-        half_base = std::max(half_base, std::abs(std::atan2(q.y(), q.x())));
-    }
-    const double gap = (surface.segment_angle_rad() - 2 * half_base) * rp;
+    // Each lifter's base ends where the thickness first exceeds the plate
+    // level, on each side of its segment's centre: the side facing +theta
+    // (ahead[k]) and the other (behind[k]); an asymmetric lifter has two
+    // different half-bases. The gap between lifter k and the next one is the
+    // segment angle less lifter k's side ahead and the next's side behind.
+    const int n = surface.segments;
+    std::vector<double> ahead(n, 0.0), behind(n, 0.0);
+    for (int k = 0; k < n; ++k)
+      for (int i = surface.segment_begin[k]; i < surface.segment_begin[k + 1]; ++i) {
+        const auto& q = surface.nodes[i];
+        if (!(R - q.norm() > L.design.plate_thickness_m + 1e-9)) continue;
+        const double a = std::remainder(std::atan2(q.y(), q.x()) - surface.segment_centre_rad(k), 2 * kPi);
+        if (a > 0) ahead[k] = std::max(ahead[k], a);
+        else behind[k] = std::max(behind[k], -a);
+      }
+    double gap = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < n; ++k) gap = std::min(gap, (surface.segment_angle_rad() - ahead[k] - behind[(k + 1) % n]) * rp);
     if (c.charge.ball_diameter_m >= gap)
       fail_at(c, "charge.ball_diameter_m",
               fmt::format("ball_diameter_m = {} m is larger than the spacing between lifters at the plate ({:.4g} m "

@@ -150,6 +150,40 @@ TEST_CASE("physically impossible mills are refused naming the key and the line",
   refused(edited("liner", "low_lifter_height_m", "0.1"), {"only with pattern"});
 }
 
+TEST_CASE("media between asymmetric lifters: the gap is one lifter's side ahead and the next one's behind",
+          "[app][config][input]") {
+  // The spacing at the plate reported by the refusal (ball_diameter_m = 0.3),
+  // for the default 20/20 deg faces and for 15/25 deg, whose bases are within
+  // a few mm of each other (0.25 m high: tan 15 + tan 25 = 0.734 against
+  // 2 tan 20 = 0.728). Twice the wider side (25 deg) understated the gap by
+  // about 50 mm and refused the default 0.1333 m media.
+  auto gap_m = [](const std::string& text) {
+    try {
+      load_config_text(text, "mill.toml", ".");
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      const auto at = m.find("spacing between lifters at the plate (");
+      REQUIRE(at != std::string::npos);
+      return std::stod(m.substr(at + std::string("spacing between lifters at the plate (").size()));
+    }
+    FAIL("accepted");
+    return 0.0;
+  };
+  const std::string sym = edited("charge", "ball_diameter_m", "0.3");
+  const std::string asym =
+      edited_text(edited_text(sym, "liner", "face_angle_leading_deg", "15.0"), "liner", "face_angle_trailing_deg", "25.0");
+  const double g_sym = gap_m(sym), g_asym = gap_m(asym);
+  CHECK(g_sym > 0.15);
+  CHECK(g_asym == Approx(g_sym).margin(0.003));
+  // the mirror (25 deg leading) the same, and the default media load with either
+  const std::string mirror =
+      edited_text(edited_text(sym, "liner", "face_angle_leading_deg", "25.0"), "liner", "face_angle_trailing_deg", "15.0");
+  CHECK(gap_m(mirror) == Approx(g_asym).margin(1e-9));
+  const std::string ok = edited_text(edited_text(default_config_text(), "liner", "face_angle_leading_deg", "15.0"), "liner",
+                                     "face_angle_trailing_deg", "25.0");
+  CHECK_NOTHROW(load_config_text(ok, "mill.toml", "."));
+}
+
 TEST_CASE("a hi-lo pattern and a measured profile load", "[app][config]") {
   std::string t = edited("liner", "pattern", "\"hi-lo\"");
   t = edited_text(t, "liner", "low_lifter_height_m", "0.15");
