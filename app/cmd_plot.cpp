@@ -1,5 +1,6 @@
 // `linerlife plot RESULTS.h5 [--out DIR]`: redraws the charts of any results
 // file (the kind is the file's `command` attribute).
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -30,10 +31,29 @@ std::string results_kind(const std::string& path) {
 
 int run_plot(const PlotOptions& o) {
   const std::string kind = results_kind(o.file);
+  if (kind == "checkpoint")
+    throw InputError(o.file, fmt::format("{} is a forecast checkpoint, not a results file: plot the forecast.h5 "
+                                         "next to it", o.file));
+  const std::vector<std::string> kinds = chart_kinds();
+  if (!kinds.empty() && std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) {
+    std::string list;
+    for (const std::string& k : kinds) list += (list.empty() ? "" : ", ") + k;
+    throw InputError(o.file, fmt::format("{} is a \"{}\" file (its command attribute); charts are drawn for the "
+                                         "results of {}", o.file, kind, list));
+  }
   const std::string dir = o.out.empty() ? std::filesystem::path(o.file).parent_path().string() : o.out;
   OutputDir out(dir.empty() ? "." : dir);
   out.prepare();
-  if (!draw_charts(kind, o.file, out.dir())) return kExitInternal;
+  const int rc = run_plot_script(kind, o.file, out.dir());
+  if (rc == 3)
+    throw InputError(o.file, fmt::format("results file {} is damaged or incomplete: it lacks a group, dataset or "
+                                         "attribute a {} results file has (above)", o.file, kind));
+  if (rc != 0) {
+    std::cerr << (rc == -1 ? "linerlife: error: the plotting script is not installed\n"
+                           : fmt::format("linerlife: error: charts not drawn (the plotting script exited with {}): "
+                                         "charts need python3-matplotlib and python3-h5py\n", rc));
+    return kExitInternal;
+  }
   std::cout << fmt::format("Drew the {} charts of {} in {}\n", kind, o.file, out.dir());
   return 0;
 }

@@ -10,7 +10,8 @@ namespace linerlife {
 
 class H5Writer {
  public:
-  /// Creates (truncates) the file at `path`.
+  /// Creates (truncates) the file at `path`. Every call throws OutputError
+  /// (naming the file) when HDF5 cannot write it.
   explicit H5Writer(const std::string& path);
   ~H5Writer();
   H5Writer(const H5Writer&) = delete;
@@ -34,6 +35,7 @@ class H5Writer {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  bool failed_ = false;  // a write failed: the file is abandoned, not closed again
 };
 
 }  // namespace linerlife

@@ -1,6 +1,9 @@
 // linerlife - forecasts when the shell liners and lifters of a tumbling mill
 // must be replaced. Exit codes (DESIGN.md §4): 0 success, 2 invalid input,
 // 3 simulation failure, 1 internal error.
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -15,6 +18,9 @@ using namespace linerlife;
 
 int main(int argc, char** argv) {
   keep_freed_memory();  // the wear run's remeshes would page-fault their buffers back in (heap_tuning.h)
+  // a file-size limit makes the write fail (an OutputError, the temporary
+  // removed) instead of killing the process with a half-written file
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{
       "linerlife: forecast of tumbling-mill liner wear and the relining date.\n"
       "Every command without a CONFIG file runs the bundled Qiu (2001) SAG mill."};
@@ -49,15 +55,31 @@ int main(int argc, char** argv) {
     return kExitInput;
   }
   try {
-    return run ? run() : kExitInput;
+    const int code = run ? run() : kExitInput;
+    // stdout that could not be written (a full disk, a closed pipe) is a
+    // failed run, not a success with a cut-off summary or configuration
+    std::cout.flush();
+    if (!std::cout) throw OutputError("cannot write to the standard output (a full disk or a closed pipe?)");
+    return code;
   } catch (const InputError& e) {
     std::cerr << "linerlife: error: " << e.what() << "\n";
     return kExitInput;
   } catch (const SimulationError& e) {
     std::cerr << "linerlife: simulation failed: " << e.what() << "\n";
     return kExitSimulation;
+  } catch (const OutputError& e) {
+    std::cerr << "linerlife: error: " << e.what() << std::endl;
+    // HDF5 1.10 keeps a file whose close failed in its list and crashes on it
+    // (SIGSEGV in H5F__close_cb) when the library shuts down at exit: leave
+    // without the exit handlers. The temporaries are gone already (OutputDir).
+    std::cout.flush();
+    std::fflush(nullptr);
+    std::_Exit(kExitInternal);
   } catch (const std::exception& e) {
     std::cerr << "linerlife: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  } catch (...) {
+    std::cerr << "linerlife: internal error: an unknown exception\n";
     return kExitInternal;
   }
 }

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -18,7 +19,11 @@ namespace fs = std::filesystem;
 
 void check_output_dir_writable(const std::string& dir) {
   std::error_code ec;
+  if (dir.empty()) throw InputError("--out", "--out \"\": give a folder");
   fs::path p = fs::absolute(dir, ec);
+  if (fs::is_symlink(fs::symlink_status(p, ec)) && !fs::exists(p, ec))
+    throw InputError(dir, fmt::format("output folder {} is a link to {}, which does not exist", dir,
+                                      fs::read_symlink(p, ec).string()));
   if (fs::exists(p, ec)) {
     if (!fs::is_directory(p, ec)) throw InputError(dir, fmt::format("output folder {} exists and is not a folder", dir));
     if (access(p.c_str(), W_OK | X_OK) != 0)
@@ -33,6 +38,13 @@ void check_output_dir_writable(const std::string& dir) {
   if (parent.empty() || access(parent.c_str(), W_OK | X_OK) != 0)
     throw InputError(dir, fmt::format("output folder {} cannot be created: {} is not writable", dir,
                                       parent.empty() ? std::string("its parent") : parent.string()));
+  // the permissions do not tell everything (a read-only or special file
+  // system such as /proc): a folder made and removed at once
+  std::string probe = (parent / ".linerlife-probe-XXXXXX").string();
+  if (mkdtemp(probe.data()) == nullptr)
+    throw InputError(dir, fmt::format("output folder {} cannot be created in {}: {}", dir, parent.string(),
+                                      std::strerror(errno)));
+  fs::remove(probe, ec);
 }
 
 void OutputDir::prepare() {
@@ -57,14 +69,24 @@ void OutputDir::prepare() {
 
 std::string OutputDir::path(const std::string& name) const { return (fs::path(dir_) / name).string(); }
 
+OutputDir::~OutputDir() {
+  std::error_code ec;
+  for (const std::string& t : pending_) fs::remove(t, ec);
+}
+
 std::string OutputDir::temp_path(const std::string& name) const {
-  return (fs::path(dir_) / fmt::format(".{}.tmp.{}", name, static_cast<long>(getpid()))).string();
+  std::string t = (fs::path(dir_) / fmt::format(".{}.tmp.{}", name, static_cast<long>(getpid()))).string();
+  const std::lock_guard<std::mutex> lock(mutex_);
+  pending_.insert(t);
+  return t;
 }
 
 void OutputDir::commit(const std::string& temp, const std::string& name) const {
   std::error_code ec;
   fs::rename(temp, path(name), ec);
-  if (ec) throw std::runtime_error(fmt::format("cannot rename {} to {}: {}", temp, path(name), ec.message()));
+  if (ec) throw OutputError(fmt::format("cannot rename {} to {}: {}", temp, path(name), ec.message()));
+  const std::lock_guard<std::mutex> lock(mutex_);
+  pending_.erase(temp);
 }
 
 void OutputDir::write_text(const std::string& name, const std::string& text) const {
@@ -73,7 +95,7 @@ void OutputDir::write_text(const std::string& name, const std::string& text) con
     std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
     f << text;
     f.flush();
-    if (!f) throw std::runtime_error(fmt::format("cannot write {}", tmp));
+    if (!f) throw OutputError(fmt::format("cannot write {}: is the disk full or the file size limited?", tmp));
   }
   commit(tmp, name);
 }

@@ -4,6 +4,8 @@
 // half-written result.
 #pragma once
 
+#include <mutex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,11 @@ namespace linerlife {
 class OutputDir {
  public:
   explicit OutputDir(std::string dir) : dir_(std::move(dir)) {}
+  /// Removes the temporaries handed out and not committed: a run that fails
+  /// while writing (a full disk, a file-size limit) leaves no half-written file.
+  ~OutputDir();
+  OutputDir(const OutputDir&) = delete;
+  OutputDir& operator=(const OutputDir&) = delete;
   /// Creates the folder (and parents) and checks it can be written; throws
   /// InputError naming the folder when it cannot. Removes the temporaries
   /// (".name.tmp.PID") a killed earlier run left behind, those of processes
@@ -29,6 +36,8 @@ class OutputDir {
  private:
   std::string dir_;
   bool prepared_ = false;
+  mutable std::mutex mutex_;
+  mutable std::set<std::string> pending_;  // temporaries not yet committed
 };
 
 /// Checks before any work starts that `dir` could be created and written

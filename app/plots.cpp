@@ -1,5 +1,6 @@
 #include "app/plots.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -21,23 +22,46 @@ std::string shell_quote(const std::string& s) {
 
 }  // namespace
 
-bool draw_charts(const std::string& kind, const std::string& results_h5, const std::string& out_dir) {
-  const char* py_env = std::getenv("LINERLIFE_PYTHON");
+std::string plot_script() {
   const char* script_env = std::getenv("LINERLIFE_PLOT_SCRIPT");
+  return script_env ? script_env : LINERLIFE_PLOT_SCRIPT;
+}
+
+int run_plot_script(const std::string& kind, const std::string& results_h5, const std::string& out_dir) {
+  const char* py_env = std::getenv("LINERLIFE_PYTHON");
   const std::string python = py_env ? py_env : "/usr/bin/python3";
-  const std::string script = script_env ? script_env : LINERLIFE_PLOT_SCRIPT;
-  if (!std::filesystem::exists(script)) {
-    std::cerr << fmt::format("linerlife: warning: charts not drawn: plotting script {} not found\n", script);
-    return false;
-  }
+  const std::string script = plot_script();
+  if (!std::filesystem::exists(script)) return -1;
   const std::string cmd = fmt::format("{} {} {} {} {}", shell_quote(python), shell_quote(script), shell_quote(kind),
                                       shell_quote(results_h5), shell_quote(out_dir));
   const int rc = std::system(cmd.c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + (WIFSIGNALED(rc) ? WTERMSIG(rc) : 0);
+}
+
+std::vector<std::string> chart_kinds() {
+  std::vector<std::string> out;
+  std::error_code ec;
+  const std::filesystem::path dir = std::filesystem::path(plot_script()).parent_path();
+  for (const auto& e : std::filesystem::directory_iterator(dir.empty() ? "." : dir, ec)) {
+    const std::string n = e.path().filename().string();
+    if (n.rfind("plot_", 0) == 0 && n.size() > 8 && n.compare(n.size() - 3, 3, ".py") == 0 && n != "plot_common.py")
+      out.push_back(n.substr(5, n.size() - 8));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+bool draw_charts(const std::string& kind, const std::string& results_h5, const std::string& out_dir) {
+  const int rc = run_plot_script(kind, results_h5, out_dir);
+  if (rc == -1) {
+    std::cerr << fmt::format("linerlife: warning: charts not drawn: plotting script {} not found\n", plot_script());
+    return false;
+  }
   if (rc != 0) {
     std::cerr << fmt::format(
-        "linerlife: warning: charts not drawn ({} exited with {}); the results file is complete. "
+        "linerlife: warning: charts not drawn (the plotting script exited with {}); the results file is complete. "
         "Charts need python3-matplotlib and python3-h5py.\n",
-        python, WIFEXITED(rc) ? WEXITSTATUS(rc) : rc);
+        rc);
     return false;
   }
   return true;

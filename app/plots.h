@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace linerlife {
 
@@ -11,5 +12,14 @@ namespace linerlife {
 /// atomically by the script). Returns false, after a warning on stderr, when
 /// the charts could not be drawn; the results file is unaffected.
 bool draw_charts(const std::string& kind, const std::string& results_h5, const std::string& out_dir);
+
+/// The exit status of the plotting script (linerlife_plot.py: 0 drawn, 3 the
+/// file lacks what its kind has, other the environment), -1 if the script is
+/// not found; no warning printed.
+int run_plot_script(const std::string& kind, const std::string& results_h5, const std::string& out_dir);
+
+/// The kinds of results file that have charts (a plot_KIND.py next to the
+/// plotting script), sorted.
+std::vector<std::string> chart_kinds();
 
 }  // namespace linerlife

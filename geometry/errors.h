@@ -1,5 +1,6 @@
-// errors.h - the three ways a linerlife run can fail, each with its exit code
-// (DESIGN.md §4): invalid input (2), simulation failure (3), internal error (1).
+// errors.h - the ways a linerlife run can fail, each with its exit code
+// (DESIGN.md §4): invalid input (2), simulation failure (3), internal error
+// and output that cannot be written (1).
 //
 // User input and runtime data are checked always (deal.II's AssertThrow); the
 // error names the key or file, the value, and what is allowed. Programming
@@ -28,6 +29,15 @@ class InputError : public std::runtime_error {
 /// A simulation that cannot produce a trustworthy result (instability, a
 /// remesh that cannot give a valid profile, an integrator failure). Exit code 3.
 class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A results file or stdout that cannot be written (a full disk, a file-size
+/// limit, a closed pipe): not the input's fault nor the simulation's. Exit
+/// code 1, with a message naming the file; no half-written file is left
+/// (OutputDir removes its temporaries).
+class OutputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

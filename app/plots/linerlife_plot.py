@@ -7,6 +7,10 @@ KIND names a module plot_KIND.py next to this file whose draw(h5, out) makes
 the charts. Every PNG is written under a temporary name and renamed, so a
 crash never leaves a half-written picture. Needs Debian's python3-matplotlib
 and python3-h5py (run with /usr/bin/python3).
+
+Exit codes: 0 charts drawn; 3 the results file lacks a group, dataset or
+attribute its kind has (damaged or not written by linerlife); 2 usage or an
+unknown kind; anything else (1: a missing package) the environment.
 """
 import importlib
 import os
@@ -31,7 +35,11 @@ def main(argv):
     import h5py
 
     with h5py.File(results, "r") as h5:
-        module.draw(h5, out)
+        try:
+            module.draw(h5, out)
+        except KeyError as e:  # h5py: a missing object or attribute
+            print(f"linerlife_plot: {results} is damaged or incomplete for a {kind} results file: {e}", file=sys.stderr)
+            return 3
     return 0
 
 

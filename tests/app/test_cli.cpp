@@ -3,8 +3,11 @@
 #include <fstream>
 #include <regex>
 
+#include <sys/wait.h>
+
 #include <catch2/catch.hpp>
 
+#include "app/h5_writer.h"
 #include "cli_runner.h"
 
 using namespace linerlife::test;
@@ -121,6 +124,80 @@ TEST_CASE("the out folder gets the results file and the charts, atomically", "[a
   const size_t n = fread(buf, 1, sizeof buf - 1, p);
   CHECK(pclose(p) == 0);
   CHECK(std::string(buf, n) == "ok\n");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("output that cannot be written fails the run naming the file, and leaves no temporary", "[app][cli]") {
+  // A file-size limit (ulimit -f, in 512- or 1024-byte blocks: far below the
+  // results files) makes HDF5's writes fail: exit 1 with the file named, not
+  // an abort (HDF5's exceptions are not std::exceptions) or a crash at exit,
+  // and no half-written temporary in the folder.
+  const fs::path dir = temp_dir("out_fail");
+  for (const std::string cmd : {"geometry", "charge --revolutions 1"}) {
+    const fs::path out = dir / "run";
+    fs::remove_all(out);
+    const fs::path err = dir / "err.txt";
+    const std::string line = "sh -c 'ulimit -f 16; exec " + std::string(LINERLIFE_BINARY) + " " + cmd + " --out " +
+                             out.string() + "' >/dev/null 2>" + err.string();
+    const int status = std::system(line.c_str());
+    INFO(cmd);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 1);
+    const std::string msg = read_file(err.string());
+    CHECK_THAT(msg, Catch::Contains("cannot write " + out.string()));
+    CHECK_THAT(msg, Catch::Contains("disk full or the file size limited"));
+    CHECK(msg.find("H5") == msg.rfind("H5"));  // one mention (the failed call), no destructor's complaints
+    REQUIRE(fs::exists(out));
+    CHECK(fs::is_empty(out));
+  }
+  // stdout that cannot be written: a failed run, not a cut-off success
+  const RunResult full = run_linerlife("defaults >/dev/full");
+  CHECK(full.code == 1);
+  CHECK_THAT(full.err, Catch::Contains("cannot write to the standard output"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("an out folder that cannot be made is refused before any work", "[app][cli][input]") {
+  const fs::path dir = temp_dir("out_bad");
+  const fs::path link = dir / "link";
+  fs::create_symlink(dir / "missing" / "x", link);
+  // a dangling link: exit 2 naming it, and no result printed first
+  const RunResult r = run_linerlife("geometry --json --out " + link.string());
+  CHECK(r.code == 2);
+  CHECK(r.out.empty());
+  CHECK_THAT(r.err, Catch::Contains("is a link to"));
+  CHECK_THAT(r.err, Catch::Contains("which does not exist"));
+  // a place the permissions allow but the file system does not (/proc)
+  const RunResult p = run_linerlife("charge --revolutions 1 --json --out /proc/linerlife_test_out");
+  CHECK(p.code == 2);
+  CHECK(p.out.empty());
+  CHECK_THAT(p.err, Catch::Contains("cannot be created in /proc"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("plot refuses what is not a results file it can draw", "[app][cli][input]") {
+  const fs::path dir = temp_dir("plot_bad");
+  auto file_with_command = [&](const std::string& name, const std::string& command) {
+    const std::string path = (dir / name).string();
+    linerlife::H5Writer h5(path);
+    h5.attr("/", "command", command);
+    h5.close();
+    return path;
+  };
+  const RunResult ck = run_linerlife("plot " + file_with_command("ck.h5", "checkpoint"));
+  CHECK(ck.code == 2);
+  CHECK_THAT(ck.err, Catch::Contains("is a forecast checkpoint, not a results file"));
+  const RunResult odd = run_linerlife("plot " + file_with_command("odd.h5", "frobnicate"));
+  CHECK(odd.code == 2);
+  CHECK_THAT(odd.err, Catch::Contains("\"frobnicate\" file"));
+  CHECK_THAT(odd.err, Catch::Contains("geometry"));
+  if (std::system("/usr/bin/python3 -c 'import matplotlib, h5py' >/dev/null 2>&1") == 0) {
+    // a geometry file without its surface: damaged, named as such (not a missing package)
+    const RunResult dmg = run_linerlife("plot " + file_with_command("damaged.h5", "geometry"));
+    CHECK(dmg.code == 2);
+    CHECK_THAT(dmg.err, Catch::Contains("is damaged or incomplete"));
+    CHECK(dmg.err.find("python3-matplotlib") == std::string::npos);
+  }
   fs::remove_all(dir);
 }
 
