@@ -225,6 +225,9 @@ int run_compare(const CompareOptions& o) {
   for (const Case& k : cases) configs.push_back(&k.config);
   const std::string ranking = design_ranking_caveat(configs);
   if (!ranking.empty()) note("linerlife: note: " + ranking);
+  // speeds compared by the layer model V-1.2: its power goes the wrong way
+  const std::string speed = speed_trend_caveat(configs);
+  if (!speed.empty()) note("linerlife: note: " + speed);
 
   if (o.json) {
     Json arr = Json::array();
@@ -250,7 +253,7 @@ int run_compare(const CompareOptions& o) {
       }
       arr.push(j);
     }
-    std::cout << Json::object().set("cases", arr).set("caveats", caveats_json(ranking)).dump() << "\n";
+    std::cout << Json::object().set("cases", arr).set("caveats", caveats_json(std::vector<std::string>{ranking, speed})).dump() << "\n";
   } else {
     size_t w = 36;
     for (const Case& k : cases) w = std::max(w, k.label.size() + 1);
@@ -298,7 +301,12 @@ int run_compare(const CompareOptions& o) {
         for (size_t a = 0; a < cases.front().varied.size(); ++a) keys += (a ? "\n" : "") + cases.front().varied[a].first;
         h5.attr("/cases", "varied_keys", keys);
       }
-      if (!ranking.empty()) h5.attr("/cases", "caveat", ranking);
+      {
+        std::string all;  // one line per caveat
+        for (const std::string& c : {ranking, speed})
+          if (!c.empty()) all += (all.empty() ? "" : "\n") + c;
+        if (!all.empty()) h5.attr("/cases", "caveat", all);
+      }
       h5.dataset("/cases/operating_hours", hours, {hours.size()}, "h");
       h5.dataset("/cases/mean_net_power_kw", mean_p, {mean_p.size()}, "kW");
       h5.dataset("/cases/final_net_power_kw", end_p, {end_p.size()}, "kW");

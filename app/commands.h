@@ -80,6 +80,8 @@ std::string worn_power_caveat(const std::string& charge_model, const std::vector
 std::string worn_power_caveat(const std::string& charge_model, const std::vector<LifeRecord>& history);
 /// A caveat as it goes into --json: an array of {text}, empty without one.
 Json caveats_json(const std::string& caveat);
+/// Several caveats (the empty ones left out) as one --json array of {text}.
+Json caveats_json(const std::vector<std::string>& caveats);
 
 /// `compare` of lifter designs by the layer model: its ranking of designs is
 /// not the DEM's everywhere (docs/validation/ball-mill.md, "Ranking lifter
@@ -87,5 +89,11 @@ Json caveats_json(const std::string& caveat);
 /// [liner] sections differ; says what the DEM comparison found and to check
 /// the short list with the DEM.
 std::string design_ranking_caveat(const std::vector<const Config*>& cases);
+
+/// `compare` of mill speeds with the layer model's version 1.2: its power
+/// falls as the speed rises where the DEM's and Morrell's rise
+/// (docs/validation/charge.md, "Operating trends"). Non-empty when some case
+/// runs layer V-1.2 and the cases' speeds differ by more than 1 %.
+std::string speed_trend_caveat(const std::vector<const Config*>& cases);
 
 }  // namespace linerlife

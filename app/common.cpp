@@ -154,6 +154,34 @@ std::string design_ranking_caveat(const std::vector<const Config*>& cases) {
          "designs\"). Check the short list with the DEM ([model] charge = \"dem\", calibrated wear) before choosing";
 }
 
+std::string speed_trend_caveat(const std::vector<const Config*>& cases) {
+  bool v12 = false;
+  double lo = 0, hi = 0;
+  for (const Config* c : cases) {
+    v12 = v12 || (c->model.charge == "layer" && c->model.variant == "1.2");
+    const double rpm = c->mill.speed_rpm;
+    lo = c == cases.front() ? rpm : std::min(lo, rpm);
+    hi = c == cases.front() ? rpm : std::max(hi, rpm);
+  }
+  if (!v12 || cases.size() < 2 || !(hi > 1.01 * lo)) return "";
+  // bench/operating_trend.py on the Qiu mill, 66 to 90 % of critical
+  return "the cases differ in mill speed, and the layer model (version 1.2) draws less power as the speed rises: on the "
+         "bundled Qiu mill -27 % from 66 to 90 % of critical, where the 2D DEM draws +41 % and Morrell's C-model +42 % "
+         "(within 10 % of the DEM only from about 76 to 82 %) (docs/validation/charge.md, \"Operating trends\"). Read "
+         "the speed's effect on power from [model] charge = \"empirical\" or \"dem\"";
+}
+
+Json caveats_json(const std::vector<std::string>& caveats) {
+  Json a = Json::array();
+  for (const std::string& c : caveats) {
+    if (c.empty()) continue;
+    Json t = Json::object();
+    t.set("text", c);
+    a.push(t);
+  }
+  return a;
+}
+
 Json caveats_json(const std::string& caveat) {
   Json a = Json::array();
   if (!caveat.empty()) {
