@@ -252,6 +252,82 @@ TEST_CASE("the horizon ends a life that reaches no criterion", "[forecast][ode]"
   CHECK(iso_date(f.relining_date) == iso_date(sp.calendar.date_after(2000)));
 }
 
+namespace {
+
+/// A plain 75 mm plate worn at r0 everywhere with an explicit method whose
+/// step is `step_h`: amplify's step is 1.5 revolutions x A at 10.36 rpm.
+ForecastResult explicit_plate(ForecastMethod m, double step_h, double r0, ForecastSpec sp) {
+  const LinerSurface s = build_liner_surface(qiu(), liner(0));
+  auto p = field([r0](const LinerSurface&, int) { return r0; });
+  sp.method = m;
+  sp.euler_step_h = step_h;
+  sp.amplify_revolutions = 1.5;
+  sp.amplification = step_h * kHour / (1.5 * 60.0 / 10.36);
+  return forecast(s, p, sp);
+}
+
+}  // namespace
+
+// The plate of the constant-rate test, 50 mm of wear in 1000 h, with a step
+// of 300 h: the steps end at 300, 600, 900 and 1200 h. Before the last step
+// was cut at the horizon, a horizon of 950 h gave "min_plate_thickness
+// reached at 1000 h" (a crossing past the horizon), and a horizon of 800 h
+// reported the state at 900 h as the horizon's (30 mm of plate left instead
+// of 35 mm).
+TEST_CASE("the explicit methods end on the horizon and never report a life beyond it", "[forecast][euler]") {
+  const ForecastMethod m = GENERATE(ForecastMethod::Euler, ForecastMethod::Amplify);
+  INFO(method_name(m));
+  const double r0 = 0.05 / (1000 * kHour);
+  for (const double horizon_h : {800.0, 950.0}) {
+    INFO("horizon " << horizon_h << " h");
+    ForecastSpec sp = base_spec();
+    sp.max_operating_hours = horizon_h;
+    const ForecastResult f = explicit_plate(m, 300, r0, sp);
+    CHECK_FALSE(f.reached);
+    CHECK(f.criterion == "horizon");
+    CHECK(f.operating_hours == horizon_h);
+    REQUIRE(!f.history.empty());
+    CHECK(f.history.back().hours == horizon_h);
+    // the state at the horizon: the plate after horizon_h of wear at r0 (the
+    // chords' nodes recede by 1 + 5e-7 of the depth)
+    CHECK(f.history.back().min_thickness_m == Approx(0.075 - r0 * horizon_h * kHour).margin(1e-6));
+  }
+  // a life inside the horizon still ends on its criterion, at 1000 h
+  ForecastSpec sp = base_spec();
+  sp.max_operating_hours = 1100;
+  const ForecastResult f = explicit_plate(m, 300, r0, sp);
+  CHECK(f.reached);
+  CHECK(f.criterion == "min_plate_thickness");
+  CHECK(f.operating_hours == Approx(1000).epsilon(1e-5));
+}
+
+// Output every 100 h with steps of 300 h: each output time once, with the
+// state of that time (exact for a constant rate: the wear of an explicit step
+// is linear in time). Before, every step end wrote one row per output time it
+// had passed, all the same state stamped with the step's end (0, 300, 300,
+// 300, 600, ...).
+TEST_CASE("the explicit methods record each output time once, at the state of that time", "[forecast][euler]") {
+  const ForecastMethod m = GENERATE(ForecastMethod::Euler, ForecastMethod::Amplify);
+  INFO(method_name(m));
+  const double r0 = 0.05 / (1000 * kHour);
+  ForecastSpec sp = base_spec();
+  sp.output_interval_h = 100;
+  const ForecastResult f = explicit_plate(m, 300, r0, sp);
+  REQUIRE(f.criterion == "min_plate_thickness");
+  // 0, 100, ..., 900 h and the end of the life at 1000 h
+  REQUIRE(f.history.size() == 11);
+  REQUIRE(f.profiles.size() == f.history.size());
+  for (size_t i = 0; i < f.history.size(); ++i) {
+    const LifeRecord& r = f.history[i];
+    INFO("record " << i << " at " << r.hours << " h");
+    if (i + 1 < f.history.size()) CHECK(r.hours == Approx(100.0 * i).margin(1e-9));
+    if (i > 0) CHECK(r.hours > f.history[i - 1].hours);
+    CHECK(f.profiles[i].hours == r.hours);
+    CHECK(r.min_thickness_m == Approx(0.075 - r0 * r.hours * kHour).margin(1e-6));
+  }
+  CHECK(f.history.back().hours == Approx(1000).epsilon(1e-5));
+}
+
 TEST_CASE("rate smoothing keeps the wear, keeps uniform fields and adds no extrema", "[forecast][smoothing]") {
   // a remeshed surface has elements of unequal length
   LinerSurface s = build_liner_surface(qiu(), liner());
