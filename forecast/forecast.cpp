@@ -446,6 +446,15 @@ class Life {
     if (progress_) progress_(r.hours, crit_.progress(g0_, g));
   }
 
+  /// The first criterion (in Criteria order) the current state meets, or -1.
+  int criterion_met() const {
+    double g[4];
+    crit_.eval(gauge_now(), g);
+    for (int i = 0; i < 4; ++i)
+      if (g[i] <= 0) return i;
+    return -1;
+  }
+
   /// Whether an explicit step that ends at depths y on `cell` remeshes: every
   /// step (amplify), or as the ODE method's roots, at the remesh depth or
   /// where an element has turned by 90 deg.
@@ -781,7 +790,18 @@ void Life::run_ode() {
       // a refresh condition sitting exactly at zero is not seen as a crossing:
       // decide the refresh from the state, not from the root flag alone.
       const bool remeshed = found[4] != 0 || found[6] != 0 || found[7] != 0;
-      if (remeshed) do_remesh();
+      if (remeshed) {
+        do_remesh();
+        // The remesh can itself meet a criterion (it removes loops and
+        // resamples the crest). CVODE restarts below with root directions -1,
+        // and a criterion function that starts at or below 0 never crosses
+        // again: check the criteria on the remeshed state and end here.
+        const int met = criterion_met();
+        if (met >= 0) {
+          stop(t_, Criteria::name(met), true);
+          return;
+        }
+      }
       if (spec_.refresh_always ? remeshed : (found[5] || moved_since_drive() >= (1 - 1e-6) * spec_.refresh_tol_m))
         drive(spec_.revolutions_per_drive);
       if (remeshed)
@@ -897,7 +917,16 @@ void Life::run_explicit(double dt_s, double revolutions, bool remesh_every_step)
     std::copy(g_new, g_new + 4, g_old);
     // as the ODE method's roots: the depth, and an element turned by 90 deg
     // (checked after the step, so a turned element never reaches a drive)
-    if (explicit_remesh_due(cell_, y_, remesh_every_step)) do_remesh();
+    if (explicit_remesh_due(cell_, y_, remesh_every_step)) {
+      do_remesh();
+      // a criterion the remesh itself meets ends the life here, as in run_ode
+      const int met = criterion_met();
+      if (met >= 0) {
+        finish(t_, Criteria::name(met), true);
+        return;
+      }
+      crit_.eval(gauge_now(), g_old);  // the step's start for the next crossing's first guess
+    }
     if (last) break;  // the horizon: finish() records it
     // the output time at the step's end, after its remesh
     if (next_explicit_out_ <= t_ * (1 + 1e-12)) {

@@ -517,3 +517,61 @@ TEST_CASE("the forecast remeshes before an element of the displaced ring turns o
   // the top wears as without the short elements: 30 mm at r0
   CHECK(f.operating_hours == Approx(300).epsilon(2e-3));
 }
+
+namespace {
+
+/// The lifter of liner() with a spike on the middle of its top: a node 0.5 mm
+/// proud of the top between nodes 1 mm either side of it. The remesh's
+/// resampling removes such a vertex (an element under 0.3 element sizes
+/// cutting off a triangle under 0.01 element sizes squared, on the charge
+/// side: geometry/resample.h), so the first remesh of a segment lowers its
+/// crest by 0.5 mm, whatever else moved.
+LinerSurface spiked_lifters() {
+  std::vector<V> prof = segment_profile(qiu(), liner(), 0);
+  size_t k = prof.size();
+  for (size_t i = 0; i + 1 < prof.size(); ++i)
+    if (prof[i].y() < 0 && prof[i + 1].y() >= 0 && prof[i].x() < 5.0) k = i;  // the top's element across angle 0
+  REQUIRE(k < prof.size());
+  const double x = prof[k].x();  // the top, 0.325 m from the shell
+  REQUIRE(prof[k + 1].x() == Approx(x).margin(1e-12));
+  prof.insert(prof.begin() + static_cast<long>(k) + 1, {V(x, -0.001), V(x - 0.0005, 0.0), V(x, 0.001)});
+  return assemble_ring(qiu().diameter_m / 2, 64, {prof}, std::vector<int>(64, 0));
+}
+
+}  // namespace
+
+// A criterion the remesh itself meets: the spiked lifter (0.2505 m) wears
+// only on the lower leading face, so its height stays 0.2505 m until the first
+// remesh (5 mm of the face, at 50 h) removes the spike: 0.2500 m, under the
+// 0.25025 m limit. The ODE restarts CVODE after a remesh with root directions
+// -1, and a criterion function that starts at or below 0 never crosses: before
+// the criteria were checked after the remesh, the life ran on to the horizon.
+TEST_CASE("a criterion met by a remesh ends the life there", "[forecast][ode][euler]") {
+  const bool euler = GENERATE(false, true);
+  INFO((euler ? "euler" : "ode"));
+  const LinerSurface s = spiked_lifters();
+  const double r0 = 0.1 / (1000 * kHour);
+  auto p = field([r0](const LinerSurface& x, int i) {
+    const V& c = x.midpoint[i];
+    const double t = thickness(x, i);
+    return x.normal[i].dot(V(-c.y(), c.x()).normalized()) > 0.5 && t > 0.08 && t < 0.2 ? r0 : 0.0;
+  });
+  ForecastSpec sp = base_spec();
+  sp.min_lifter_height_m = 0.25025;
+  sp.max_operating_hours = 500;
+  if (euler) {
+    sp.method = ForecastMethod::Euler;
+    sp.euler_step_h = 5;
+  }
+  const ForecastResult f = forecast(s, p, sp);
+  REQUIRE(f.history.size() >= 2);
+  CHECK(f.history.front().lifter_height_m == Approx(0.2505).margin(1e-9));
+  CHECK(f.reached);
+  CHECK(f.criterion == "min_lifter_height");
+  CHECK(f.stats.remeshes == 1);
+  // the first remesh: the face node that wears fastest at 5 mm (ode), or the
+  // end of the first Euler step past it (55 h: 5.5 mm)
+  if (euler) CHECK(f.operating_hours == 55);
+  else CHECK(f.operating_hours == Approx(50).epsilon(1e-3));
+  CHECK(f.history.back().lifter_height_m == Approx(0.25).margin(1e-5));
+}
