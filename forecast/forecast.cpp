@@ -559,9 +559,10 @@ class Life {
     if (c.method != method_name(spec_.method))
       throw InputError("--resume", fmt::format("the checkpoint is of a {} forecast, this run asks for {}", c.method,
                                                method_name(spec_.method)));
+    const CheckpointProblem bad = checkpoint_problem(c, in_, spec_);
+    if (!bad.ok())
+      throw InputError("--resume", fmt::format("the checkpoint's {}: {} (a damaged checkpoint?)", bad.field, bad.what));
     cell_ = Cell(c.base, cell_.period());
-    if (static_cast<int>(c.y.size()) != cell_.size())
-      throw InputError("--resume", "the checkpoint's state does not match its liner (a damaged checkpoint?)");
     t_ = c.t_s;
     y_ = c.y;
     y_drive_ = c.y_drive;
@@ -940,6 +941,74 @@ void Life::run_explicit(double dt_s, double revolutions, bool remesh_every_step)
 }
 
 }  // namespace
+
+CheckpointProblem checkpoint_problem(const ForecastCheckpoint& c, const ForecastInput& in, const ForecastSpec& spec) {
+  auto bad = [](const char* field, std::string what) { return CheckpointProblem{field, std::move(what)}; };
+  const LinerSurface& b = c.base;
+  const LinerSurface& s0 = *in.initial;
+  if (!(std::isfinite(b.shell_radius_m) && b.shell_radius_m == s0.shell_radius_m))
+    return bad("shell_radius_m", fmt::format("{} m; the liner's shell radius is {} m", b.shell_radius_m,
+                                             s0.shell_radius_m));
+  if (b.segments != s0.segments)
+    return bad("segments", fmt::format("{}; the liner has {} segments", b.segments, s0.segments));
+  const size_t nseg = static_cast<size_t>(s0.segments);
+  if (b.segment_begin.size() != nseg + 1)
+    return bad("base_segment_begin", fmt::format("{} entries; {} expected (segments + 1)", b.segment_begin.size(),
+                                                 nseg + 1));
+  if (b.segment_begin[0] != 0) return bad("base_segment_begin", fmt::format("starts at {}; must start at 0", b.segment_begin[0]));
+  for (size_t k = 0; k < nseg; ++k)
+    if (b.segment_begin[k + 1] <= b.segment_begin[k])
+      return bad("base_segment_begin", fmt::format("entry {} is {} after {}; the entries must increase", k + 1,
+                                                   b.segment_begin[k + 1], b.segment_begin[k]));
+  if (static_cast<size_t>(b.segment_begin[nseg]) != b.nodes.size())
+    return bad("base_segment_begin", fmt::format("ends at {}; the ring has {} nodes (base_nodes)", b.segment_begin[nseg],
+                                                 b.nodes.size()));
+  for (const Eigen::Vector2d& q : b.nodes)
+    if (!q.allFinite()) return bad("base_nodes", "a coordinate that is not a finite number");
+  if (b.segment_design.size() != nseg)
+    return bad("base_segment_design", fmt::format("{} entries; the liner has {} segments", b.segment_design.size(), nseg));
+  for (size_t k = 0; k < nseg; ++k)
+    if (b.segment_design[k] != s0.segment_design[k])
+      return bad("base_segment_design", fmt::format("entry {} is {}; the liner's segment {} has design {}", k,
+                                                    b.segment_design[k], k, s0.segment_design[k]));
+  const int p = pattern_period(s0);
+  const int n = b.segment_begin[static_cast<size_t>(p)];
+  if (static_cast<size_t>(n) * (nseg / static_cast<size_t>(p)) != b.nodes.size())
+    return bad("base_segment_begin", fmt::format("the ring of {} nodes is not its first {} segment(s) ({} nodes) "
+                                                 "repeated",
+                                                 b.nodes.size(), p, n));
+  struct Vec {
+    const char* name;
+    const std::vector<double>* v;
+    bool required, rate;
+  };
+  for (const Vec& v : {Vec{"y", &c.y, true, false}, Vec{"y_drive", &c.y_drive, true, false},
+                       Vec{"r_now", &c.r_now, true, true}, Vec{"y_prev", &c.y_prev, c.have_prev, false},
+                       Vec{"r_prev", &c.r_prev, c.have_prev, true}}) {
+    if (v.v->size() != static_cast<size_t>(n) && (v.required || !v.v->empty()))
+      return bad(v.name, fmt::format("{} values; the stored ring's cell has {} nodes{}", v.v->size(), n,
+                                     v.required ? "" : " (or none, without have_prev)"));
+    for (double x : *v.v)
+      if (!std::isfinite(x) || (v.rate && x < 0))
+        return bad(v.name, fmt::format("a value {}; must be finite{}", x, v.rate ? " and >= 0" : ""));
+  }
+  const double horizon = spec.max_operating_hours * 3600.0;
+  if (!(c.t_s >= 0 && c.t_s <= horizon))
+    return bad("t_s", fmt::format("{} s; allowed 0 <= t_s <= max_operating_hours ({} s)", c.t_s, horizon));
+  if (!(std::isfinite(c.next_regular_s) && c.next_regular_s > 0))
+    return bad("next_regular_s", fmt::format("{} s; must be finite and > 0", c.next_regular_s));
+  if (!(std::isfinite(c.next_explicit_out_s) && c.next_explicit_out_s > 0))
+    return bad("next_explicit_out_s", fmt::format("{} s; must be finite and > 0", c.next_explicit_out_s));
+  long long extra = 0;
+  for (double h : spec.extra_output_hours)
+    if (h > 0) ++extra;
+  if (c.next_extra < 0 || c.next_extra > extra)
+    return bad("next_extra", fmt::format("{}; allowed 0 to {} (the extra output times)", c.next_extra, extra));
+  if (c.history.size() != c.profiles.size())
+    return bad("profile_hours", fmt::format("{} profiles for {} history records; one each expected",
+                                            c.profiles.size(), c.history.size()));
+  return {};
+}
 
 ForecastResult run_forecast(const ForecastInput& in, RateProvider& rates, const ForecastSpec& spec,
                             const ForecastHooks& hooks) {
