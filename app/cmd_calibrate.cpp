@@ -89,6 +89,15 @@ std::array<double, 3> scales(const std::vector<Param>& ps, const std::vector<dou
 int run_calibrate(const CalibrateOptions& o) {
   const Config c = load_config_or_default(o.config);
   if (o.measured.empty()) throw InputError("--measured", "calibrate needs --measured FILE.csv (docs/measured-profiles.md)");
+  // The measured profiles are of one lifter row, and the rest of the life is
+  // forecast on a ring built from the last of them: a hi-lo liner would go on
+  // as a ring of identical worn high lifters, its low rows' wear unmeasured.
+  if (c.liner.hi_lo)
+    rethrow_located(c, InputError("liner.pattern",
+                                  "pattern = \"hi-lo\": calibrate does not support a hi-lo liner: the measured "
+                                  "profiles are of one lifter row, and the rest of the life would be forecast on a "
+                                  "ring of identical worn high lifters (the low rows' wear is not measured); "
+                                  "calibrate a uniform liner (docs/measured-profiles.md)"));
   const MeasuredHistory h = load_measured_history(o.measured);
   validate_measured_history(h, c.mill.shell_radius_m(), c.liner.segments);
   check_history_has_wear(h);
@@ -128,7 +137,7 @@ int run_calibrate(const CalibrateOptions& o) {
   const MeasuredSnapshot& last = h.snapshots.back();
   LinerDesign worn = c.liner;
   worn.measured = true;
-  worn.hi_lo = false;
+  worn.hi_lo = false;  // refused above: a hi-lo ring cannot be rebuilt from one measured row
   worn.profile.source = fmt::format("{} at {} h", o.measured, last.hours);
   worn.profile.points = last.points;
   auto worn_ring = std::make_shared<LinerSurface>(build_liner_surface(c.mill, worn));

@@ -247,6 +247,23 @@ TEST_CASE("calibrate refuses a factor the wear laws or the profiles cannot deter
   fs::remove_all(dir);
 }
 
+// The remaining life is forecast on a ring built from the last measured row:
+// a hi-lo liner went on as a ring of identical worn high lifters (exit 0).
+TEST_CASE("calibrate refuses a hi-lo liner at its pattern line", "[app][cli][input]") {
+  const fs::path dir = temp_dir("bad_hilo");
+  const fs::path out = dir / "cal";
+  write_file(dir / "ok.csv", "hours,x_m,y_m\n1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n");
+  write_file(dir / "hilo.toml", defaults_with("pattern = ", "pattern = \"hi-lo\"\nlow_lifter_height_m = 0.15\n"
+                                                            "low_lifter_top_width_m = 0.15"));
+  REQUIRE(run_linerlife("geometry " + (dir / "hilo.toml").string() + " --json").code == 0);  // a valid hi-lo mill
+  check_refused(run_linerlife("calibrate " + (dir / "hilo.toml").string() + " --measured " +
+                              (dir / "ok.csv").string() + " --out " + out.string(), 120),
+                {"hi-lo", {"hilo.toml:", "pattern = \"hi-lo\": calibrate does not support a hi-lo liner",
+                           "identical worn high lifters"}},
+                out);
+  fs::remove_all(dir);
+}
+
 namespace {
 
 struct StartCase {
