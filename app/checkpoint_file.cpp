@@ -116,7 +116,8 @@ void write_checkpoint(const OutputDir& dir, const std::string& config_text, cons
   dir.commit(tmp, "checkpoint.h5");
 }
 
-ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& config_text) {
+ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& config_text, const ForecastInput& in,
+                                   const ForecastSpec& spec) {
   H5Reader h5(path);
   if (!h5.exists("/checkpoint") || h5.attr_string("/", "command") != "checkpoint")
     throw InputError(path, fmt::format("{} is not a linerlife forecast checkpoint", path));
@@ -128,6 +129,18 @@ ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& c
     throw InputError(path, fmt::format("{} was made by linerlife {}, this is {}; run without --resume", path,
                                        h5.attr_string("/", "version"), program_version()));
   const std::string g = "/checkpoint";
+  // a damaged checkpoint: the dataset or attribute, what is wrong, and the way out
+  auto damaged = [&](const std::string& name, const std::string& what) {
+    // a dataset g/name, or an attribute g@name
+    const std::string where = h5.exists(g + "/" + name) ? g + "/" + name : g + "@" + name;
+    return InputError(path, fmt::format("{}: {}: {}; the checkpoint is damaged: run without --resume to start afresh",
+                                        path, where, what));
+  };
+  auto xy_pairs = [&](const std::string& name) {
+    const std::vector<double> v = h5.doubles(g + "/" + name);
+    if (v.size() % 2 != 0) throw damaged(name, fmt::format("{} values; x, y pairs expected", v.size()));
+    return v;
+  };
   ForecastCheckpoint c;
   c.method = h5.attr_string(g, "method");
   c.t_s = h5.attr_double(g, "t_s");
@@ -149,23 +162,40 @@ ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& c
   c.r_prev = h5.doubles(g + "/r_prev");
   c.base.shell_radius_m = h5.attr_double(g, "shell_radius_m");
   c.base.segments = static_cast<int>(h5.attr_int(g, "segments"));
-  c.base.nodes = points(h5.doubles(g + "/base_nodes"));
-  for (long long v : h5.ints(g + "/base_segment_begin")) c.base.segment_begin.push_back(static_cast<int>(v));
-  for (long long v : h5.ints(g + "/base_segment_design")) c.base.segment_design.push_back(static_cast<int>(v));
-  if (c.base.segment_begin.size() != static_cast<size_t>(c.base.segments) + 1 ||
-      c.base.segment_begin.back() != static_cast<int>(c.base.nodes.size()))
-    throw InputError(path, fmt::format("{}: the stored liner is inconsistent (a damaged checkpoint?)", path));
-  c.base.finalize();
+  c.base.nodes = points(xy_pairs("base_nodes"));
+  for (long long v : h5.ints(g + "/base_segment_begin")) {
+    if (v < 0 || v > static_cast<long long>(c.base.nodes.size()))
+      throw damaged("base_segment_begin",
+                    fmt::format("an entry {}; allowed 0 to {} (the stored nodes)", v, c.base.nodes.size()));
+    c.base.segment_begin.push_back(static_cast<int>(v));
+  }
+  for (long long v : h5.ints(g + "/base_segment_design")) {
+    if (v < 0 || v > 1) throw damaged("base_segment_design", fmt::format("an entry {}; allowed 0 (high) or 1 (low)", v));
+    c.base.segment_design.push_back(static_cast<int>(v));
+  }
   const std::vector<double> hours = h5.doubles(g + "/history_hours");
   c.history.resize(hours.size());
   for (const Field& f : kFields) {
     const std::vector<double> v = h5.doubles(g + "/history_" + f.name);
-    if (v.size() != hours.size()) throw InputError(path, fmt::format("{}: damaged history", path));
+    if (v.size() != hours.size())
+      throw damaged(std::string("history_") + f.name,
+                    fmt::format("{} values; history_hours has {}", v.size(), hours.size()));
     for (size_t i = 0; i < v.size(); ++i) c.history[i].*(f.member) = v[i];
   }
-  const std::vector<double> ph = h5.doubles(g + "/profile_hours"), pn = h5.doubles(g + "/profile_nodes");
+  const std::vector<double> ph = h5.doubles(g + "/profile_hours"), pn = xy_pairs("profile_nodes");
   const std::vector<long long> off = h5.ints(g + "/profile_offset");
-  if (off.size() != ph.size() + 1) throw InputError(path, fmt::format("{}: damaged profiles", path));
+  // profile i is profile_nodes[off[i] .. off[i+1]): from 0, increasing in
+  // x, y pairs, to the end of profile_nodes
+  if (off.size() != ph.size() + 1)
+    throw damaged("profile_offset", fmt::format("{} entries for {} profiles (profile_hours); profiles + 1 expected",
+                                                off.size(), ph.size()));
+  if (off.front() != 0) throw damaged("profile_offset", fmt::format("starts at {}; must start at 0", off.front()));
+  if (off.back() != static_cast<long long>(pn.size()))
+    throw damaged("profile_offset", fmt::format("ends at {}; profile_nodes has {} values", off.back(), pn.size()));
+  for (size_t i = 0; i + 1 < off.size(); ++i)
+    if (off[i + 1] < off[i] || off[i + 1] % 2 != 0)
+      throw damaged("profile_offset", fmt::format("entry {} is {} after {}; the entries must be even and not decrease",
+                                                  i + 1, off[i + 1], off[i]));
   for (size_t i = 0; i < ph.size(); ++i) {
     ProfileRecord p;
     p.hours = ph[i];
@@ -174,7 +204,8 @@ ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& c
   }
   const std::vector<long long> si = h5.ints(g + "/stats_int");
   const std::vector<double> sd = h5.doubles(g + "/stats_double");
-  if (si.size() != 7 || sd.size() != 3) throw InputError(path, fmt::format("{}: damaged statistics", path));
+  if (si.size() != 7) throw damaged("stats_int", fmt::format("{} values; 7 expected", si.size()));
+  if (sd.size() != 3) throw damaged("stats_double", fmt::format("{} values; 3 expected", sd.size()));
   c.stats.charge_redrives = static_cast<int>(si[0]);
   c.stats.remeshes = static_cast<int>(si[1]);
   c.stats.cvode_steps = si[2];
@@ -186,9 +217,13 @@ ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& c
   c.stats.charge_wall_s = sd[1];
   c.stats.charge_simulated_s = sd[2];
   const std::vector<long long> nd = h5.exists(g + "/note_drives") ? h5.ints(g + "/note_drives") : std::vector<long long>{};
-  if (nd.size() % 2 != 0) throw InputError(path, fmt::format("{}: damaged notes", path));
+  if (nd.size() % 2 != 0) throw damaged("note_drives", fmt::format("{} values; (first drive, drives) pairs expected", nd.size()));
   for (size_t i = 0; i < nd.size() / 2; ++i)
     c.notes.push_back({h5.attr_string(g, fmt::format("note_{}", i)), nd[2 * i], nd[2 * i + 1]});
+  // the arrays against each other and against the run to continue
+  const CheckpointProblem bad = checkpoint_problem(c, in, spec);
+  if (!bad.ok()) throw damaged(bad.field, bad.what);
+  c.base.finalize();
   return c;
 }
 

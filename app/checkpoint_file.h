@@ -14,8 +14,12 @@ namespace linerlife {
 /// (temporary name, then rename).
 void write_checkpoint(const OutputDir& dir, const std::string& config_text, const ForecastCheckpoint& c);
 
-/// Reads dir's checkpoint; throws InputError if it was made with another
-/// configuration or program version, or cannot be read.
-ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& config_text);
+/// Reads the checkpoint at `path` for a run of `in` with `spec`; throws
+/// InputError naming the file (and the dataset) if it was made with another
+/// configuration or program version, cannot be read, or is damaged: its
+/// arrays inconsistent with each other or with the run
+/// (checkpoint_problem(), forecast/forecast.h).
+ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& config_text, const ForecastInput& in,
+                                   const ForecastSpec& spec);
 
 }  // namespace linerlife

@@ -54,6 +54,27 @@ std::vector<Param> parse_fit(const std::string& fit) {
                                         fit));
 }
 
+/// Refuses a fitted factor that scales no wear: the abrasion factors without
+/// an abrasion law, the impact factor without an impact law. The fit could
+/// not determine it (calibrate() would refuse it after the first forecasts).
+void check_fit_against_laws(const std::vector<Param>& ps, const std::string& fit, const Config& c) {
+  bool abrasion = false, impact = false;
+  for (const std::string& law : c.wear.laws) {
+    abrasion = abrasion || law.rfind("abrasion/", 0) == 0;
+    impact = impact || law.rfind("impact/", 0) == 0;
+  }
+  for (const Param& q : ps) {
+    const bool scales_wear = ((q.centrifugal || q.gravitational) && abrasion) || (q.impact && impact);
+    if (scales_wear) continue;
+    throw InputError("--fit", fmt::format("--fit {}: the {} factor scales {} wear, and the wear laws (\"{}\") have no "
+                                          "{} law: the profiles cannot determine it; fit {} or add such a law to "
+                                          "[wear] laws",
+                                          fit, q.name, q.impact && !q.centrifugal ? "impact" : "abrasive",
+                                          c.wear_laws_text, q.impact && !q.centrifugal ? "impact" : "abrasion",
+                                          abrasion ? "--fit abrasion" : impact ? "--fit impact" : "nothing (no wear law)"));
+  }
+}
+
 /// The scale of each calibration factor for a parameter vector.
 std::array<double, 3> scales(const std::vector<Param>& ps, const std::vector<double>& v) {
   std::array<double, 3> s{1, 1, 1};
@@ -68,9 +89,20 @@ std::array<double, 3> scales(const std::vector<Param>& ps, const std::vector<dou
 int run_calibrate(const CalibrateOptions& o) {
   const Config c = load_config_or_default(o.config);
   if (o.measured.empty()) throw InputError("--measured", "calibrate needs --measured FILE.csv (docs/measured-profiles.md)");
+  // The measured profiles are of one lifter row, and the rest of the life is
+  // forecast on a ring built from the last of them: a hi-lo liner would go on
+  // as a ring of identical worn high lifters, its low rows' wear unmeasured.
+  if (c.liner.hi_lo)
+    rethrow_located(c, InputError("liner.pattern",
+                                  "pattern = \"hi-lo\": calibrate does not support a hi-lo liner: the measured "
+                                  "profiles are of one lifter row, and the rest of the life would be forecast on a "
+                                  "ring of identical worn high lifters (the low rows' wear is not measured); "
+                                  "calibrate a uniform liner (docs/measured-profiles.md)"));
   const MeasuredHistory h = load_measured_history(o.measured);
   validate_measured_history(h, c.mill.shell_radius_m(), c.liner.segments);
+  check_history_has_wear(h);
   const std::vector<Param> ps = parse_fit(o.fit);
+  check_fit_against_laws(ps, o.fit, c);
   // the finite differences: one forecast per parameter, and one more for the life's spread
   const int jobs = forecast_jobs(o.jobs, static_cast<int>(ps.size()) + 1, c.model.charge == "dem");
   if (!o.out.empty()) check_output_dir_writable(o.out);
@@ -105,7 +137,7 @@ int run_calibrate(const CalibrateOptions& o) {
   const MeasuredSnapshot& last = h.snapshots.back();
   LinerDesign worn = c.liner;
   worn.measured = true;
-  worn.hi_lo = false;
+  worn.hi_lo = false;  // refused above: a hi-lo ring cannot be rebuilt from one measured row
   worn.profile.source = fmt::format("{} at {} h", o.measured, last.hours);
   worn.profile.points = last.points;
   auto worn_ring = std::make_shared<LinerSurface>(build_liner_surface(c.mill, worn));

@@ -102,7 +102,7 @@ int run_forecast_command(const ForecastOptions& o) {
     const std::string cp = dir->path("checkpoint.h5");
     if (o.resume) {
       if (std::filesystem::exists(cp)) {
-        resume_from = read_checkpoint(cp, config_text);
+        resume_from = read_checkpoint(cp, config_text, setup.input, c.forecast);
         hooks.resume = &resume_from;
         if (!o.json && !o.quiet)
           std::cerr << fmt::format("  resuming from {} at {:.0f} operating hours\n", cp, resume_from.t_s / 3600.0);

@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "forecast/parallel.h"
 #include "geometry/errors.h"
@@ -83,6 +84,35 @@ struct Fit {
   }
 };
 
+/// Refuses a fit whose Jacobian J (residuals x parameters) cannot determine
+/// every parameter: J^T J is then singular, its "inverse" NaN or inf, and a
+/// sigma taken from it would read 0 (std::max(0, NaN)). The rank is that of
+/// a column-pivoting QR of J with pivots below 1e-8 of the largest counted as
+/// zero; the undetermined parameters are the columns the pivoting leaves last.
+constexpr double kMaxSigmaLog = 2.302585092994046;  // ln 10: a 1-sigma factor of 10
+
+void check_determined(const Eigen::MatrixXd& J, const CalibrationProblem& p) {
+  const Eigen::Index np = J.cols();
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(J);
+  qr.setThreshold(1e-8);
+  const bool finite = J.allFinite();
+  const Eigen::Index rank = finite ? qr.rank() : 0;
+  if (finite && rank == np) return;
+  std::string names, why;
+  for (Eigen::Index k = finite ? rank : 0; k < np; ++k) {
+    const Eigen::Index j = finite ? qr.colsPermutation().indices()(k) : k;
+    names += (names.empty() ? "" : ", ") + p.names[static_cast<size_t>(j)];
+    if (why.empty())
+      why = !finite                   ? "the forecasts around the fit failed to give finite profiles"
+            : J.col(j).norm() == 0.0 ? "the forecast profiles at the measured hours do not change with it"
+                                      : "it changes the forecast profiles only as the other fitted factors do";
+  }
+  throw InputError(p.measured.source,
+                   fmt::format("{}: the measured profiles cannot determine the factor(s) {} ({} fitted: {}): {}; fit "
+                               "only factors the wear laws and the profiles can tell apart (--fit)",
+                               p.measured.source, names, np, fmt::join(p.names, ","), why));
+}
+
 std::vector<double> exp_of(const Eigen::VectorXd& theta) {
   std::vector<double> v(static_cast<size_t>(theta.size()));
   for (Eigen::Index i = 0; i < theta.size(); ++i) v[static_cast<size_t>(i)] = std::exp(theta(i));
@@ -91,11 +121,21 @@ std::vector<double> exp_of(const Eigen::VectorXd& theta) {
 
 }  // namespace
 
+void check_history_has_wear(const MeasuredHistory& h) {
+  for (const auto& m : h.snapshots)
+    if (m.hours > 0) return;
+  throw InputError(h.source, fmt::format("{}: the measured history has no profile after 0 h: profiles of the new liner "
+                                         "alone cannot determine a wear factor; add a profile measured after some "
+                                         "operating hours",
+                                         h.source));
+}
+
 CalibrationResult calibrate(const CalibrationProblem& p) {
   const int np = static_cast<int>(p.initial.size());
   if (np == 0) throw std::invalid_argument("calibrate: no parameters");
   for (double v : p.initial)
     if (!(v > 0)) throw std::invalid_argument("calibrate: parameters must start > 0");
+  check_history_has_wear(p.measured);
   Fit fit{p};
   CalibrationResult res;
   Eigen::VectorXd theta(np);
@@ -122,6 +162,7 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
   for (int it = 0; it < p.max_iterations; ++it) {
     res.iterations = it + 1;
     jacobian();
+    if (it == 0) check_determined(J, p);  // before a fit that cannot succeed
     const Eigen::MatrixXd A = J.transpose() * J;
     const Eigen::VectorXd g = J.transpose() * r;
     bool improved = false;
@@ -152,10 +193,36 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
   }
   // covariance of ln(parameters) at the optimum: s^2 (J^T J)^-1, with J re-evaluated there
   jacobian();
+  check_determined(J, p);
   const double s2 = rss / static_cast<double>(m - np);
   res.covariance_log = s2 * (J.transpose() * J).inverse();
   res.params = exp_of(theta);
-  for (int j = 0; j < np; ++j) res.sigma_log.push_back(std::sqrt(std::max(0.0, res.covariance_log(j, j))));
+  for (int j = 0; j < np; ++j) {
+    const double v = res.covariance_log(j, j);
+    if (!(std::isfinite(v) && v >= 0))  // check_determined() should have caught it; never a sigma of 0 for it
+      throw SimulationError(fmt::format("calibrate: the variance of ln({}) came out {}: (J^T J) could not be inverted "
+                                        "at the fitted factors",
+                                        p.names[static_cast<size_t>(j)], v));
+    res.sigma_log.push_back(std::sqrt(v));
+  }
+  // Full rank is not enough: a factor that moves the profiles by little more
+  // than the forecasts' own resolution gets a finite but meaningless sigma
+  // (the bundled mill's default fit against three points at 1000 h: the
+  // impact factor's 1-sigma came out "x/ inf", its P90 1e79 h). A factor
+  // known only to within a factor of 10 at one sigma is not determined, and
+  // the spread of the life, linearised in ln(factor) over +-0.02, would mean
+  // nothing that far out.
+  std::string loose;
+  for (int j = 0; j < np; ++j)
+    if (res.sigma_log[static_cast<size_t>(j)] > kMaxSigmaLog)
+      loose += fmt::format("{}{} (sigma of ln(factor) {:.3g})", loose.empty() ? "" : ", ", p.names[static_cast<size_t>(j)],
+                           res.sigma_log[static_cast<size_t>(j)]);
+  if (!loose.empty())
+    throw InputError(p.measured.source,
+                     fmt::format("{}: the measured profiles cannot determine the factor(s) {}: known only to within "
+                                 "more than a factor of 10 at one sigma ({} fitted: {}); fit fewer factors (--fit), "
+                                 "or measure profiles where and when the wear they scale shows",
+                                 p.measured.source, loose, np, fmt::join(p.names, ",")));
   fit.residuals(res.params, &res.rms_per_snapshot_m);
   res.rms_m = std::sqrt(rss / m);
   res.forecasts = fit.forecasts;

@@ -45,7 +45,17 @@ struct CalibrationResult {
   bool converged = false;
 };
 
+/// Fits p.names to p.measured. Throws InputError naming p.measured.source
+/// when the data cannot determine a factor: no profile after 0 h
+/// (check_history_has_wear), or a Jacobian of the residuals without full
+/// column rank (a factor that does not change the forecast profiles, or
+/// changes them only as the others do), naming the factor(s); never a sigma
+/// of 0 for an undetermined factor.
 CalibrationResult calibrate(const CalibrationProblem& p);
+
+/// Throws InputError naming the file when the history has no profile after
+/// 0 h: profiles of the new liner alone cannot determine a wear factor.
+void check_history_has_wear(const MeasuredHistory& h);
 
 /// The forecast profiles of segment 0 at the measured hours for `params`
 /// (mill frame), as the fit compares them.

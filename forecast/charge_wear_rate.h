@@ -14,9 +14,12 @@ namespace linerlife {
 
 class ChargeWearRate : public RateProvider {
  public:
-  /// `wear` must have been made for `entry` (make_wear_model). `seed` makes
-  /// the drives of models with random elements reproducible: drive k uses
-  /// seed + k, so a resumed forecast repeats its drives.
+  /// `wear` must have been made for `entry` (make_wear_model). Drive k
+  /// passes seed + k to the charge model (ChargeInput::seed), so a resumed
+  /// forecast repeats its drives: the layer model seeds its shuffle of
+  /// element ids with it. The DEM does not read it: every DEM drive takes
+  /// its disc sizes and placement from `[dem] seed` (ModelSpec), the same
+  /// for every drive.
   ChargeWearRate(const Mill& mill, const ChargeSpec& charge, const ModelSpec& model, const ChargeModelEntry& entry,
                  WearModel wear, const LinerMaterial& material, unsigned long long seed = 1);
 

@@ -417,8 +417,12 @@ class Life {
 
   Gauge gauge_now() const { return gauge(cell_.displaced(y_.data()), cell_.period(), in_.rotation, in_.density_kg_m3); }
 
-  void record(double t_s) {
-    const Gauge g = gauge_now();
+  void record(double t_s) { record_ring(t_s, cell_.displaced(y_.data())); }
+
+  /// A history and profile record of `ring` (a ring of the current cell's
+  /// period) at operating time t_s, with the last drive's indicators.
+  void record_ring(double t_s, const LinerSurface& ring) {
+    const Gauge g = gauge(ring, cell_.period(), in_.rotation, in_.density_kg_m3);
     LifeRecord r;
     r.hours = t_s / 3600.0;
     r.lifter_height_m = g.lifter.lifter_height_m;
@@ -435,12 +439,44 @@ class Life {
     r.direct_impact_fraction = last_.has_indicators ? ind.direct_impact_fraction : kNaN;
     r.impact_fraction = last_.impact_fraction;
     res_.history.push_back(r);
-    const LinerSurface ring = cell_.displaced(y_.data());
     ProfileRecord p;
     p.hours = r.hours;
     for (int i = ring.segment_begin[0]; i <= ring.segment_begin[1]; ++i) p.nodes.push_back(ring.nodes[i % ring.n_nodes()]);
     res_.profiles.push_back(std::move(p));
     if (progress_) progress_(r.hours, crit_.progress(g0_, g));
+  }
+
+  /// The first criterion (in Criteria order) the current state meets, or -1.
+  int criterion_met() const {
+    double g[4];
+    crit_.eval(gauge_now(), g);
+    for (int i = 0; i < 4; ++i)
+      if (g[i] <= 0) return i;
+    return -1;
+  }
+
+  /// Whether an explicit step that ends at depths y on `cell` remeshes: every
+  /// step (amplify), or as the ODE method's roots, at the remesh depth or
+  /// where an element has turned by 90 deg.
+  bool explicit_remesh_due(const Cell& cell, const std::vector<double>& y, bool every_step) const {
+    if (every_step) return true;
+    double ymax = 0;
+    for (double v : y) ymax = std::max(ymax, v);
+    return ymax > remesh_depth_ || min_element_projection(cell.base(), cell.displaced(y.data()), cell.size()) <= 0;
+  }
+
+  /// The record of an output time inside an explicit step, at the depths y
+  /// of that time: the ring as the step would leave it there (remeshed when
+  /// a step ending there would remesh), the current cell unchanged.
+  void record_explicit(double t_s, const std::vector<double>& y, bool remesh_every_step) {
+    if (!explicit_remesh_due(cell_, y, remesh_every_step)) {
+      record_ring(t_s, cell_.displaced(y.data()));
+      return;
+    }
+    Cell c = cell_;
+    c.remesh(y.data(), opt_);
+    const std::vector<double> zero(static_cast<size_t>(c.size()), 0.0);
+    record_ring(t_s, c.displaced(zero.data()));
   }
 
   /// Remeshes at the current depths and carries the drive history onto the
@@ -523,9 +559,10 @@ class Life {
     if (c.method != method_name(spec_.method))
       throw InputError("--resume", fmt::format("the checkpoint is of a {} forecast, this run asks for {}", c.method,
                                                method_name(spec_.method)));
+    const CheckpointProblem bad = checkpoint_problem(c, in_, spec_);
+    if (!bad.ok())
+      throw InputError("--resume", fmt::format("the checkpoint's {}: {} (a damaged checkpoint?)", bad.field, bad.what));
     cell_ = Cell(c.base, cell_.period());
-    if (static_cast<int>(c.y.size()) != cell_.size())
-      throw InputError("--resume", "the checkpoint's state does not match its liner (a damaged checkpoint?)");
     t_ = c.t_s;
     y_ = c.y;
     y_drive_ = c.y_drive;
@@ -754,7 +791,18 @@ void Life::run_ode() {
       // a refresh condition sitting exactly at zero is not seen as a crossing:
       // decide the refresh from the state, not from the root flag alone.
       const bool remeshed = found[4] != 0 || found[6] != 0 || found[7] != 0;
-      if (remeshed) do_remesh();
+      if (remeshed) {
+        do_remesh();
+        // The remesh can itself meet a criterion (it removes loops and
+        // resamples the crest). CVODE restarts below with root directions -1,
+        // and a criterion function that starts at or below 0 never crosses
+        // again: check the criteria on the remeshed state and end here.
+        const int met = criterion_met();
+        if (met >= 0) {
+          stop(t_, Criteria::name(met), true);
+          return;
+        }
+      }
       if (spec_.refresh_always ? remeshed : (found[5] || moved_since_drive() >= (1 - 1e-6) * spec_.refresh_tol_m))
         drive(spec_.revolutions_per_drive);
       if (remeshed)
@@ -779,21 +827,45 @@ void Life::run_ode() {
 
 void Life::run_explicit(double dt_s, double revolutions, bool remesh_every_step) {
   const double horizon = spec_.max_operating_hours * 3600.0;
+  const double out_dt = spec_.output_interval_h * 3600.0;
   if (spec_.method == ForecastMethod::Amplify && !hooks_.resume) {
     // the first drive already happened with revolutions_per_drive; the thesis
     // method drives over its own short window
     drive(revolutions);
   }
+  // Within a step the wear is linear in time (rate x time, the rates fixed
+  // at the step's start): the state at a fraction f of the step is
+  // y + f r h exactly. The outputs inside a step and the criterion crossing
+  // are placed on that line.
+  auto state_at = [&](double f, double h) {
+    std::vector<double> yf(y_);
+    for (int i = 0; i < cell_.size(); ++i) yf[i] += f * r_now_[i] * h;
+    return yf;
+  };
+  // the output times before t_end (exclusive), each at the state of its own
+  // time within the step from t_ (length h), remeshed as the step's end would
+  // be: one row per output time, hours increasing
+  auto record_outputs_before = [&](double t_end, double h) {
+    while (next_explicit_out_ < t_end * (1 - 1e-12)) {
+      if (next_explicit_out_ > t_) record_explicit(next_explicit_out_, state_at((next_explicit_out_ - t_) / h, h),
+                                                   remesh_every_step);
+      next_explicit_out_ += out_dt;
+    }
+  };
   double g_old[4];
   crit_.eval(gauge_now(), g_old);
   while (t_ < horizon) {
-    std::vector<double> y_new(y_);
-    for (int i = 0; i < cell_.size(); ++i) y_new[i] += r_now_[i] * dt_s;
+    // the last step ends on the horizon: a life beyond it is not reached,
+    // and the state at the horizon is the one reported for it
+    const bool last = horizon - t_ <= dt_s * (1 + 1e-9);
+    const double h = last ? horizon - t_ : dt_s;
+    const std::vector<double> y_new = state_at(1.0, h);
     const Gauge gn = gauge(cell_.displaced(y_new.data()), cell_.period(), in_.rotation, in_.density_kg_m3);
     double g_new[4];
     crit_.eval(gn, g_new);
     ++res_.stats.explicit_steps;
-    // the first criterion to cross, located by linear interpolation in the step
+    // the first criterion to cross: a first guess by linear interpolation of
+    // the criteria in the step
     int first = -1;
     double frac_first = 2;
     for (int i = 0; i < 4; ++i)
@@ -812,8 +884,7 @@ void Life::run_explicit(double dt_s, double revolutions, bool remesh_every_step)
       // located by bisection to 1e-6 of the step, so the end state meets the
       // criterion it is reported for.
       auto first_crossed = [&](double f, int& which) {
-        std::vector<double> yf(y_);
-        for (int i = 0; i < cell_.size(); ++i) yf[i] += f * r_now_[i] * dt_s;
+        const std::vector<double> yf = state_at(f, h);
         double g[4];
         crit_.eval(gauge(cell_.displaced(yf.data()), cell_.period(), in_.rotation, in_.density_kg_m3), g);
         which = -1;
@@ -831,26 +902,37 @@ void Life::run_explicit(double dt_s, double revolutions, bool remesh_every_step)
         else lo = mid;
       }
       frac_first = hi;
-      for (int i = 0; i < cell_.size(); ++i) y_[i] += frac_first * r_now_[i] * dt_s;
+      const double t_end = last && frac_first == 1.0 ? horizon : t_ + frac_first * h;
+      record_outputs_before(t_end, h);
+      y_ = state_at(frac_first, h);
       // the final profile as a remesh makes it: on a long step the displaced
       // ring folds, and the loops are material that the step wore away
       do_remesh();
-      finish(t_ + frac_first * dt_s, Criteria::name(first), true);
+      finish(t_end, Criteria::name(first), true);
       return;
     }
+    const double t_end = last ? horizon : t_ + h;
+    record_outputs_before(t_end, h);
     y_ = y_new;
-    t_ += dt_s;
+    t_ = t_end;
     std::copy(g_new, g_new + 4, g_old);
-    double ymax = 0;
-    for (double v : y_) ymax = std::max(ymax, v);
     // as the ODE method's roots: the depth, and an element turned by 90 deg
     // (checked after the step, so a turned element never reaches a drive)
-    if (remesh_every_step || ymax > remesh_depth_ ||
-        min_element_projection(cell_.base(), cell_.displaced(y_.data()), cell_.size()) <= 0)
+    if (explicit_remesh_due(cell_, y_, remesh_every_step)) {
       do_remesh();
-    while (t_ >= next_explicit_out_) {
+      // a criterion the remesh itself meets ends the life here, as in run_ode
+      const int met = criterion_met();
+      if (met >= 0) {
+        finish(t_, Criteria::name(met), true);
+        return;
+      }
+      crit_.eval(gauge_now(), g_old);  // the step's start for the next crossing's first guess
+    }
+    if (last) break;  // the horizon: finish() records it
+    // the output time at the step's end, after its remesh
+    if (next_explicit_out_ <= t_ * (1 + 1e-12)) {
       record(t_);
-      next_explicit_out_ += spec_.output_interval_h * 3600.0;
+      while (next_explicit_out_ <= t_ * (1 + 1e-12)) next_explicit_out_ += out_dt;
     }
     drive(revolutions);
     maybe_checkpoint();
@@ -859,6 +941,74 @@ void Life::run_explicit(double dt_s, double revolutions, bool remesh_every_step)
 }
 
 }  // namespace
+
+CheckpointProblem checkpoint_problem(const ForecastCheckpoint& c, const ForecastInput& in, const ForecastSpec& spec) {
+  auto bad = [](const char* field, std::string what) { return CheckpointProblem{field, std::move(what)}; };
+  const LinerSurface& b = c.base;
+  const LinerSurface& s0 = *in.initial;
+  if (!(std::isfinite(b.shell_radius_m) && b.shell_radius_m == s0.shell_radius_m))
+    return bad("shell_radius_m", fmt::format("{} m; the liner's shell radius is {} m", b.shell_radius_m,
+                                             s0.shell_radius_m));
+  if (b.segments != s0.segments)
+    return bad("segments", fmt::format("{}; the liner has {} segments", b.segments, s0.segments));
+  const size_t nseg = static_cast<size_t>(s0.segments);
+  if (b.segment_begin.size() != nseg + 1)
+    return bad("base_segment_begin", fmt::format("{} entries; {} expected (segments + 1)", b.segment_begin.size(),
+                                                 nseg + 1));
+  if (b.segment_begin[0] != 0) return bad("base_segment_begin", fmt::format("starts at {}; must start at 0", b.segment_begin[0]));
+  for (size_t k = 0; k < nseg; ++k)
+    if (b.segment_begin[k + 1] <= b.segment_begin[k])
+      return bad("base_segment_begin", fmt::format("entry {} is {} after {}; the entries must increase", k + 1,
+                                                   b.segment_begin[k + 1], b.segment_begin[k]));
+  if (static_cast<size_t>(b.segment_begin[nseg]) != b.nodes.size())
+    return bad("base_segment_begin", fmt::format("ends at {}; the ring has {} nodes (base_nodes)", b.segment_begin[nseg],
+                                                 b.nodes.size()));
+  for (const Eigen::Vector2d& q : b.nodes)
+    if (!q.allFinite()) return bad("base_nodes", "a coordinate that is not a finite number");
+  if (b.segment_design.size() != nseg)
+    return bad("base_segment_design", fmt::format("{} entries; the liner has {} segments", b.segment_design.size(), nseg));
+  for (size_t k = 0; k < nseg; ++k)
+    if (b.segment_design[k] != s0.segment_design[k])
+      return bad("base_segment_design", fmt::format("entry {} is {}; the liner's segment {} has design {}", k,
+                                                    b.segment_design[k], k, s0.segment_design[k]));
+  const int p = pattern_period(s0);
+  const int n = b.segment_begin[static_cast<size_t>(p)];
+  if (static_cast<size_t>(n) * (nseg / static_cast<size_t>(p)) != b.nodes.size())
+    return bad("base_segment_begin", fmt::format("the ring of {} nodes is not its first {} segment(s) ({} nodes) "
+                                                 "repeated",
+                                                 b.nodes.size(), p, n));
+  struct Vec {
+    const char* name;
+    const std::vector<double>* v;
+    bool required, rate;
+  };
+  for (const Vec& v : {Vec{"y", &c.y, true, false}, Vec{"y_drive", &c.y_drive, true, false},
+                       Vec{"r_now", &c.r_now, true, true}, Vec{"y_prev", &c.y_prev, c.have_prev, false},
+                       Vec{"r_prev", &c.r_prev, c.have_prev, true}}) {
+    if (v.v->size() != static_cast<size_t>(n) && (v.required || !v.v->empty()))
+      return bad(v.name, fmt::format("{} values; the stored ring's cell has {} nodes{}", v.v->size(), n,
+                                     v.required ? "" : " (or none, without have_prev)"));
+    for (double x : *v.v)
+      if (!std::isfinite(x) || (v.rate && x < 0))
+        return bad(v.name, fmt::format("a value {}; must be finite{}", x, v.rate ? " and >= 0" : ""));
+  }
+  const double horizon = spec.max_operating_hours * 3600.0;
+  if (!(c.t_s >= 0 && c.t_s <= horizon))
+    return bad("t_s", fmt::format("{} s; allowed 0 <= t_s <= max_operating_hours ({} s)", c.t_s, horizon));
+  if (!(std::isfinite(c.next_regular_s) && c.next_regular_s > 0))
+    return bad("next_regular_s", fmt::format("{} s; must be finite and > 0", c.next_regular_s));
+  if (!(std::isfinite(c.next_explicit_out_s) && c.next_explicit_out_s > 0))
+    return bad("next_explicit_out_s", fmt::format("{} s; must be finite and > 0", c.next_explicit_out_s));
+  long long extra = 0;
+  for (double h : spec.extra_output_hours)
+    if (h > 0) ++extra;
+  if (c.next_extra < 0 || c.next_extra > extra)
+    return bad("next_extra", fmt::format("{}; allowed 0 to {} (the extra output times)", c.next_extra, extra));
+  if (c.history.size() != c.profiles.size())
+    return bad("profile_hours", fmt::format("{} profiles for {} history records; one each expected",
+                                            c.profiles.size(), c.history.size()));
+  return {};
+}
 
 ForecastResult run_forecast(const ForecastInput& in, RateProvider& rates, const ForecastSpec& spec,
                             const ForecastHooks& hooks) {

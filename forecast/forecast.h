@@ -102,6 +102,26 @@ struct ForecastCheckpoint {
   std::vector<DriveNote> notes;
 };
 
+/// What makes a checkpoint unusable: `field` names the ForecastCheckpoint
+/// member (the dataset or attribute of app/checkpoint_file.cpp: "y", "r_now",
+/// "base_segment_begin", ...), `what` says what is wrong with it; both empty
+/// when the checkpoint is usable.
+struct CheckpointProblem {
+  std::string field, what;
+  bool ok() const { return field.empty(); }
+};
+
+/// Checks a checkpoint read back from a file before a run continues from it,
+/// against itself and the run it is to continue (`in`, `spec`): the stored
+/// ring (shell radius and segments as the initial liner's, segment_begin from
+/// 0 increasing to the node count, the initial liner's segment_design, the
+/// cell repeated round the ring), the cell-node vectors (y, y_drive, r_now;
+/// y_prev and r_prev when have_prev, else empty or of the cell's size), finite
+/// values and rates >= 0, the times (0 <= t_s <= the horizon) and the output
+/// schedule (next_extra within spec.extra_output_hours), and one profile per
+/// history record.
+CheckpointProblem checkpoint_problem(const ForecastCheckpoint& c, const ForecastInput& in, const ForecastSpec& spec);
+
 struct ForecastHooks {
   ProgressFn progress;
   /// Called with a checkpoint at most every checkpoint_interval_s of wall time

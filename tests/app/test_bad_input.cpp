@@ -219,6 +219,51 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
   fs::remove_all(dir);
 }
 
+// Factors the data cannot determine: before, J^T J was singular, the
+// factor's sigma came out 0 and P10 = P50 = P90 with exit 0. Refused before
+// any forecast (the wear laws), or before the first (the profiles).
+TEST_CASE("calibrate refuses a factor the wear laws or the profiles cannot determine", "[app][cli][input]") {
+  const fs::path dir = temp_dir("bad_fit");
+  const fs::path out = dir / "cal";
+  const std::string o = " --out " + out.string();
+  write_file(dir / "ok.csv", "hours,x_m,y_m\n1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n");
+  write_file(dir / "new.csv", "hours,x_m,y_m\n0,0,0.075\n0,0.25,0.3\n0,0.508618,0.075\n");
+  write_file(dir / "abr.toml", defaults_with("laws = ", "laws = \"abrasion/radziszewski\""));
+  write_file(dir / "imp.toml", defaults_with("laws = ", "laws = \"impact/sheldon_kanhere\""));
+  const std::string csv = " --measured " + (dir / "ok.csv").string();
+  const std::string abr = (dir / "abr.toml").string(), imp = (dir / "imp.toml").string();
+  const std::vector<Refusal> cases = {
+      {"calibrate " + abr + csv + o,
+       {"--fit abrasion,impact: the impact factor scales impact wear, and the wear laws (\"abrasion/radziszewski\") "
+        "have no impact law", "fit --fit abrasion"}},
+      {"calibrate " + abr + csv + " --fit impact" + o, {"--fit impact: the impact factor", "no impact law"}},
+      {"calibrate " + imp + csv + " --fit abrasion" + o,
+       {"--fit abrasion: the abrasion factor scales abrasive wear", "no abrasion law", "fit --fit impact"}},
+      {"calibrate " + imp + csv + " --fit centrifugal,gravitational,impact" + o, {"the centrifugal factor"}},
+      {"calibrate --measured " + (dir / "new.csv").string() + o,
+       {"new.csv: the measured history has no profile after 0 h"}},
+  };
+  for (const Refusal& c : cases) check_refused(run_linerlife(c.args, 120), c, out);
+  fs::remove_all(dir);
+}
+
+// The remaining life is forecast on a ring built from the last measured row:
+// a hi-lo liner went on as a ring of identical worn high lifters (exit 0).
+TEST_CASE("calibrate refuses a hi-lo liner at its pattern line", "[app][cli][input]") {
+  const fs::path dir = temp_dir("bad_hilo");
+  const fs::path out = dir / "cal";
+  write_file(dir / "ok.csv", "hours,x_m,y_m\n1000,0,0.075\n1000,0.25,0.3\n1000,0.508618,0.075\n");
+  write_file(dir / "hilo.toml", defaults_with("pattern = ", "pattern = \"hi-lo\"\nlow_lifter_height_m = 0.15\n"
+                                                            "low_lifter_top_width_m = 0.15"));
+  REQUIRE(run_linerlife("geometry " + (dir / "hilo.toml").string() + " --json").code == 0);  // a valid hi-lo mill
+  check_refused(run_linerlife("calibrate " + (dir / "hilo.toml").string() + " --measured " +
+                              (dir / "ok.csv").string() + " --out " + out.string(), 120),
+                {"hi-lo", {"hilo.toml:", "pattern = \"hi-lo\": calibrate does not support a hi-lo liner",
+                           "identical worn high lifters"}},
+                out);
+  fs::remove_all(dir);
+}
+
 namespace {
 
 struct StartCase {

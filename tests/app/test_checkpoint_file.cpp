@@ -19,8 +19,14 @@ TEST_CASE("a checkpoint file keeps the charge model's notes", "[app][forecast][r
   k.method = "ode";
   k.t_s = 3600;
   k.base = build_liner_surface(c.mill, c.liner);
-  k.y = {0.001, 0.002};
+  const size_t n = static_cast<size_t>(k.base.segment_begin[1]);  // the cell of a uniform liner: one segment
+  k.y.assign(n, 0.001);
+  k.y_drive.assign(n, 0.0005);
+  k.r_now.assign(n, 1e-9);
+  k.next_regular_s = k.next_explicit_out_s = 360000;
   k.stats.charge_redrives = 7;
+  ForecastInput in;
+  in.initial = &k.base;
   const std::filesystem::path dir = temp_dir("checkpoint_notes");
   OutputDir out(dir.string());
   out.prepare();
@@ -29,7 +35,7 @@ TEST_CASE("a checkpoint file keeps the charge model's notes", "[app][forecast][r
                                                    {"the charge does not fit outside the inner radius", 4, 2}}}) {
     k.notes = notes;
     write_checkpoint(out, "config text", k);
-    const ForecastCheckpoint r = read_checkpoint(out.path("checkpoint.h5"), "config text");
+    const ForecastCheckpoint r = read_checkpoint(out.path("checkpoint.h5"), "config text", in, c.forecast);
     REQUIRE(r.notes.size() == notes.size());
     for (size_t i = 0; i < notes.size(); ++i) {
       CHECK(r.notes[i].text == notes[i].text);

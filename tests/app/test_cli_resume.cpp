@@ -210,3 +210,70 @@ TEST_CASE("a forecast that fails part-way exits 3 and leaves its results marked 
   for (double v : lifter) CHECK(std::isfinite(v));
   fs::remove_all(dir);
 }
+
+// A damaged checkpoint is refused before any work: exit 2 naming the file and
+// the dataset, nothing written, the checkpoint left as it was. Before the
+// checks, a checkpoint whose profile_offset pointed past its profile_nodes
+// crashed --resume (segfault, rc 139), and rates or drive states of the wrong
+// size were used unchecked. The checkpoint is a real one (a run failed at its
+// fifth drive leaves the one of its fourth), damaged with h5py in place.
+TEST_CASE("a damaged checkpoint is refused naming the file and the dataset and nothing is written",
+          "[app][cli][forecast][resume]") {
+  const fs::path dir = temp_dir("fc_damaged");
+  const fs::path cfg = dir / "qiu.toml", out = dir / "out";
+  write_file(cfg, resumable_qiu());
+  ::setenv("LINERLIFE_FAIL_AT_DRIVE", "5", 1);
+  const RunResult failed = run_linerlife("forecast " + cfg.string() + " --json --quiet --out " + out.string(), 300);
+  ::unsetenv("LINERLIFE_FAIL_AT_DRIVE");
+  INFO(failed.err);
+  REQUIRE(failed.code == 3);
+  const fs::path cp = out / "checkpoint.h5", good = dir / "good.h5";
+  REQUIRE(fs::exists(cp));
+  REQUIRE(H5Reader(cp.string()).attr_int("/checkpoint", "have_prev") == 1);  // y_prev, r_prev in use
+  fs::rename(cp, good);
+  fs::remove(out / "forecast.h5");  // the failed run's partial results
+
+  // each case: a Python statement on the open checkpoint `c` (h5py group
+  // /checkpoint), and the dataset or attribute the refusal must name
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"v = c['profile_offset'][()]; v[1] = 10**9; c['profile_offset'][...] = v", "/checkpoint/profile_offset"},
+      {"v = c['profile_offset'][()]; v[1] = 3; c['profile_offset'][...] = v", "/checkpoint/profile_offset"},
+      {"v = c['r_now'][:3]; del c['r_now']; c['r_now'] = v", "/checkpoint/r_now"},
+      {"v = c['y_prev'][:-1]; del c['y_prev']; c['y_prev'] = v", "/checkpoint/y_prev"},
+      {"v = c['r_prev'][:0]; del c['r_prev']; c['r_prev'] = v", "/checkpoint/r_prev"},
+      {"v = c['y_drive'][()]; v[0] = float('nan'); c['y_drive'][...] = v", "/checkpoint/y_drive"},
+      {"v = c['y'][:5]; del c['y']; c['y'] = v", "/checkpoint/y"},
+      {"v = c['base_segment_begin'][()]; v[1], v[2] = v[2], v[1]; c['base_segment_begin'][...] = v",
+       "/checkpoint/base_segment_begin"},
+      {"v = c['base_segment_design'][()]; v[3] = 1; c['base_segment_design'][...] = v",
+       "/checkpoint/base_segment_design"},
+      {"v = c['base_segment_design'][:-1]; del c['base_segment_design']; c['base_segment_design'] = v",
+       "/checkpoint/base_segment_design"},
+      {"c.attrs['next_extra'] = 5", "/checkpoint@next_extra"},
+  };
+  for (const auto& [damage, name] : cases) {
+    INFO("damage: " << damage);
+    fs::copy_file(good, cp, fs::copy_options::overwrite_existing);
+    const std::string py = "/usr/bin/python3 -c \"import h5py; f = h5py.File('" + cp.string() +
+                           "', 'r+'); c = f['checkpoint']; " + damage + "; f.close()\"";
+    REQUIRE(std::system(py.c_str()) == 0);
+    const std::string before = read_file(cp.string());
+    const RunResult r =
+        run_linerlife("forecast " + cfg.string() + " --json --quiet --out " + out.string() + " --resume", 120);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("linerlife: error: " + cp.string() + ": " + name + ": "));
+    CHECK_THAT(r.err, Catch::Contains("the checkpoint is damaged: run without --resume"));
+    CHECK(r.out.empty());
+    CHECK_FALSE(fs::exists(out / "forecast.h5"));
+    CHECK(read_file(cp.string()) == before);  // left for a look
+    CHECK(temporaries(out).empty());
+  }
+  // the undamaged checkpoint resumes
+  fs::copy_file(good, cp, fs::copy_options::overwrite_existing);
+  const RunResult ok = run_linerlife("forecast " + cfg.string() + " --json --quiet --out " + out.string() + " --resume", 300);
+  INFO(ok.err);
+  CHECK(ok.code == 0);
+  CHECK(fs::exists(out / "forecast.h5"));
+  fs::remove_all(dir);
+}

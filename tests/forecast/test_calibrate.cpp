@@ -177,6 +177,54 @@ TEST_CASE("the finite differences of a calibration run at once with the results 
   CHECK(qa.sigma_ln > 0);
 }
 
+// J^T J of a fit with an undetermined factor is singular: its "inverse" is
+// NaN or inf, and std::max(0, NaN) made the factor's sigma 0, so P10 = P50 =
+// P90 with exit 0. Such a fit is refused naming the factor.
+TEST_CASE("calibrate refuses a factor the measured profiles cannot determine", "[forecast][calibrate][input]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  CalibrationProblem p = two_factor_problem(s);
+  p.measured = scans(s, 0.7, 1.0, {1500, 3000});
+  auto refused = [&](const std::string& words) {
+    try {
+      const CalibrationResult r = calibrate(p);
+      FAIL("fitted " << r.params[0] << ", " << r.params[1] << " with sigma " << r.sigma_log[0] << ", "
+                     << r.sigma_log[1]);
+    } catch (const InputError& e) {
+      CHECK(e.key() == "synthetic");
+      CHECK_THAT(e.what(), Catch::Contains(words));
+    }
+  };
+  SECTION("a factor that scales nothing (--fit impact without an impact law)") {
+    p.make_provider = [](const std::vector<double>& k) { return std::make_unique<TwoPartRates>(k[0], 1.0); };
+    refused("cannot determine the factor(s) impact (2 fitted: abrasion,impact): the forecast profiles at the "
+            "measured hours do not change with it");
+  }
+  SECTION("two factors that scale the same wear") {
+    p.make_provider = [](const std::vector<double>& k) {
+      return std::make_unique<TwoPartRates>(k[0] * k[1], k[0] * k[1]);
+    };
+    refused("only as the other fitted factors do");
+  }
+  SECTION("a factor that moves the profiles by much less than the scans' scatter") {
+    // impact wear of at most 0.004 mm by 3000 h, scans scattered by +-0.5 mm:
+    // full rank, but a sigma of ln(impact factor) far above ln 10 (before: a
+    // finite, meaningless spread of the life). One iteration: given more, the
+    // fit raises the factor until the impact wear fits the scatter (to 13.6
+    // in 12 iterations, sigma 2.2).
+    p.max_iterations = 1;
+    p.make_provider = [](const std::vector<double>& k) { return std::make_unique<TwoPartRates>(k[0], 1e-4 * k[1]); };
+    p.measured = scans(s, 0.7, 1e-4, {1500, 3000});
+    int i = 0;
+    for (auto& m : p.measured.snapshots)
+      for (V& q : m.points) q.y() += 5e-4 * ((i++ * 7919) % 11 - 5) / 5.0;
+    refused("cannot determine the factor(s) impact (sigma of ln(factor) ");
+  }
+  SECTION("only the new liner's profile") {
+    p.measured = scans(s, 1.0, 1.0, {0});
+    refused("synthetic: the measured history has no profile after 0 h");
+  }
+}
+
 TEST_CASE("parallel_for calls every index once and reports the lowest failure", "[forecast][parallel]") {
   for (const int jobs : {1, 2, 4}) {
     std::vector<std::atomic<int>> calls(50);

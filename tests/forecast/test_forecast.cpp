@@ -252,6 +252,82 @@ TEST_CASE("the horizon ends a life that reaches no criterion", "[forecast][ode]"
   CHECK(iso_date(f.relining_date) == iso_date(sp.calendar.date_after(2000)));
 }
 
+namespace {
+
+/// A plain 75 mm plate worn at r0 everywhere with an explicit method whose
+/// step is `step_h`: amplify's step is 1.5 revolutions x A at 10.36 rpm.
+ForecastResult explicit_plate(ForecastMethod m, double step_h, double r0, ForecastSpec sp) {
+  const LinerSurface s = build_liner_surface(qiu(), liner(0));
+  auto p = field([r0](const LinerSurface&, int) { return r0; });
+  sp.method = m;
+  sp.euler_step_h = step_h;
+  sp.amplify_revolutions = 1.5;
+  sp.amplification = step_h * kHour / (1.5 * 60.0 / 10.36);
+  return forecast(s, p, sp);
+}
+
+}  // namespace
+
+// The plate of the constant-rate test, 50 mm of wear in 1000 h, with a step
+// of 300 h: the steps end at 300, 600, 900 and 1200 h. Before the last step
+// was cut at the horizon, a horizon of 950 h gave "min_plate_thickness
+// reached at 1000 h" (a crossing past the horizon), and a horizon of 800 h
+// reported the state at 900 h as the horizon's (30 mm of plate left instead
+// of 35 mm).
+TEST_CASE("the explicit methods end on the horizon and never report a life beyond it", "[forecast][euler]") {
+  const ForecastMethod m = GENERATE(ForecastMethod::Euler, ForecastMethod::Amplify);
+  INFO(method_name(m));
+  const double r0 = 0.05 / (1000 * kHour);
+  for (const double horizon_h : {800.0, 950.0}) {
+    INFO("horizon " << horizon_h << " h");
+    ForecastSpec sp = base_spec();
+    sp.max_operating_hours = horizon_h;
+    const ForecastResult f = explicit_plate(m, 300, r0, sp);
+    CHECK_FALSE(f.reached);
+    CHECK(f.criterion == "horizon");
+    CHECK(f.operating_hours == horizon_h);
+    REQUIRE(!f.history.empty());
+    CHECK(f.history.back().hours == horizon_h);
+    // the state at the horizon: the plate after horizon_h of wear at r0 (the
+    // chords' nodes recede by 1 + 5e-7 of the depth)
+    CHECK(f.history.back().min_thickness_m == Approx(0.075 - r0 * horizon_h * kHour).margin(1e-6));
+  }
+  // a life inside the horizon still ends on its criterion, at 1000 h
+  ForecastSpec sp = base_spec();
+  sp.max_operating_hours = 1100;
+  const ForecastResult f = explicit_plate(m, 300, r0, sp);
+  CHECK(f.reached);
+  CHECK(f.criterion == "min_plate_thickness");
+  CHECK(f.operating_hours == Approx(1000).epsilon(1e-5));
+}
+
+// Output every 100 h with steps of 300 h: each output time once, with the
+// state of that time (exact for a constant rate: the wear of an explicit step
+// is linear in time). Before, every step end wrote one row per output time it
+// had passed, all the same state stamped with the step's end (0, 300, 300,
+// 300, 600, ...).
+TEST_CASE("the explicit methods record each output time once, at the state of that time", "[forecast][euler]") {
+  const ForecastMethod m = GENERATE(ForecastMethod::Euler, ForecastMethod::Amplify);
+  INFO(method_name(m));
+  const double r0 = 0.05 / (1000 * kHour);
+  ForecastSpec sp = base_spec();
+  sp.output_interval_h = 100;
+  const ForecastResult f = explicit_plate(m, 300, r0, sp);
+  REQUIRE(f.criterion == "min_plate_thickness");
+  // 0, 100, ..., 900 h and the end of the life at 1000 h
+  REQUIRE(f.history.size() == 11);
+  REQUIRE(f.profiles.size() == f.history.size());
+  for (size_t i = 0; i < f.history.size(); ++i) {
+    const LifeRecord& r = f.history[i];
+    INFO("record " << i << " at " << r.hours << " h");
+    if (i + 1 < f.history.size()) CHECK(r.hours == Approx(100.0 * i).margin(1e-9));
+    if (i > 0) CHECK(r.hours > f.history[i - 1].hours);
+    CHECK(f.profiles[i].hours == r.hours);
+    CHECK(r.min_thickness_m == Approx(0.075 - r0 * r.hours * kHour).margin(1e-6));
+  }
+  CHECK(f.history.back().hours == Approx(1000).epsilon(1e-5));
+}
+
 TEST_CASE("rate smoothing keeps the wear, keeps uniform fields and adds no extrema", "[forecast][smoothing]") {
   // a remeshed surface has elements of unequal length
   LinerSurface s = build_liner_surface(qiu(), liner());
@@ -440,4 +516,62 @@ TEST_CASE("the forecast remeshes before an element of the displaced ring turns o
   CHECK(worst < 120);
   // the top wears as without the short elements: 30 mm at r0
   CHECK(f.operating_hours == Approx(300).epsilon(2e-3));
+}
+
+namespace {
+
+/// The lifter of liner() with a spike on the middle of its top: a node 0.5 mm
+/// proud of the top between nodes 1 mm either side of it. The remesh's
+/// resampling removes such a vertex (an element under 0.3 element sizes
+/// cutting off a triangle under 0.01 element sizes squared, on the charge
+/// side: geometry/resample.h), so the first remesh of a segment lowers its
+/// crest by 0.5 mm, whatever else moved.
+LinerSurface spiked_lifters() {
+  std::vector<V> prof = segment_profile(qiu(), liner(), 0);
+  size_t k = prof.size();
+  for (size_t i = 0; i + 1 < prof.size(); ++i)
+    if (prof[i].y() < 0 && prof[i + 1].y() >= 0 && prof[i].x() < 5.0) k = i;  // the top's element across angle 0
+  REQUIRE(k < prof.size());
+  const double x = prof[k].x();  // the top, 0.325 m from the shell
+  REQUIRE(prof[k + 1].x() == Approx(x).margin(1e-12));
+  prof.insert(prof.begin() + static_cast<long>(k) + 1, {V(x, -0.001), V(x - 0.0005, 0.0), V(x, 0.001)});
+  return assemble_ring(qiu().diameter_m / 2, 64, {prof}, std::vector<int>(64, 0));
+}
+
+}  // namespace
+
+// A criterion the remesh itself meets: the spiked lifter (0.2505 m) wears
+// only on the lower leading face, so its height stays 0.2505 m until the first
+// remesh (5 mm of the face, at 50 h) removes the spike: 0.2500 m, under the
+// 0.25025 m limit. The ODE restarts CVODE after a remesh with root directions
+// -1, and a criterion function that starts at or below 0 never crosses: before
+// the criteria were checked after the remesh, the life ran on to the horizon.
+TEST_CASE("a criterion met by a remesh ends the life there", "[forecast][ode][euler]") {
+  const bool euler = GENERATE(false, true);
+  INFO((euler ? "euler" : "ode"));
+  const LinerSurface s = spiked_lifters();
+  const double r0 = 0.1 / (1000 * kHour);
+  auto p = field([r0](const LinerSurface& x, int i) {
+    const V& c = x.midpoint[i];
+    const double t = thickness(x, i);
+    return x.normal[i].dot(V(-c.y(), c.x()).normalized()) > 0.5 && t > 0.08 && t < 0.2 ? r0 : 0.0;
+  });
+  ForecastSpec sp = base_spec();
+  sp.min_lifter_height_m = 0.25025;
+  sp.max_operating_hours = 500;
+  if (euler) {
+    sp.method = ForecastMethod::Euler;
+    sp.euler_step_h = 5;
+  }
+  const ForecastResult f = forecast(s, p, sp);
+  REQUIRE(f.history.size() >= 2);
+  CHECK(f.history.front().lifter_height_m == Approx(0.2505).margin(1e-9));
+  CHECK(f.reached);
+  CHECK(f.criterion == "min_lifter_height");
+  CHECK(f.stats.remeshes == 1);
+  // the first remesh: the face node that wears fastest at 5 mm (ode), or the
+  // end of the first Euler step past it (55 h: 5.5 mm)
+  if (euler) CHECK(f.operating_hours == 55);
+  else CHECK(f.operating_hours == Approx(50).epsilon(1e-3));
+  CHECK(f.history.back().lifter_height_m == Approx(0.25).margin(1e-5));
 }
