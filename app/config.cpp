@@ -12,6 +12,7 @@
 
 #include "geometry/build_liner_surface.h"
 #include "geometry/errors.h"
+#include "geometry/input_file.h"
 #include "geometry/measured_profile.h"
 #include "geometry/metrics.h"
 #include "forecast/calendar.h"
@@ -393,6 +394,7 @@ Config load_config_file(const std::string& path) {
   if (!fs::exists(path, ec)) throw InputError(path, fmt::format("configuration file {} does not exist", path));
   if (fs::is_directory(path, ec))
     throw InputError(path, fmt::format("configuration file {} is a directory, not a TOML file", path));
+  require_regular_input_file(path, "configuration file");
   std::ifstream f(path, std::ios::binary);
   if (!f) throw InputError(path, fmt::format("configuration file {} cannot be read (permissions?)", path));
   std::stringstream ss;

@@ -125,6 +125,32 @@ TEST_CASE("configuration files that are not valid TOML or cannot be read exit 2 
   fs::remove_all(dir);
 }
 
+// An endless file (/dev/zero) was read whole into memory until bad_alloc
+// (exit 1); every input file must now be a regular file of at most 10 MB.
+TEST_CASE("input files that are devices or larger than 10 MB are refused naming the file", "[app][cli][input]") {
+  const fs::path dir = temp_dir("bad_file_kind");
+  const fs::path out = dir / "out";
+  // a configuration of 10 MB of comments and then the keys
+  write_file(dir / "big.toml", std::string(10'000'001, '#') + "\n" + defaults_with("diameter_m = ", "diameter_m = 10.36"));
+  // a configuration whose profile_csv is a device
+  write_file(dir / "prof.toml", defaults_with("# profile_csv = ", "profile_csv = \"/dev/zero\""));
+  const std::string prof_line = [&] {
+    const std::string t = read_file((dir / "prof.toml").string());
+    return std::to_string(1 + std::count(t.begin(), t.begin() + static_cast<long>(t.find("profile_csv = \"/dev/zero\"")), '\n'));
+  }();
+  const std::vector<Refusal> cases = {
+      {"geometry /dev/zero", {"configuration file /dev/zero is not a regular file"}},
+      {"forecast --quiet /dev/zero", {"configuration file /dev/zero is not a regular file"}},
+      {"geometry " + (dir / "big.toml").string(),
+       {"configuration file " + (dir / "big.toml").string() + " is 100", "allowed at most 10000000 bytes (10 MB)"}},
+      {"geometry " + (dir / "prof.toml").string(),
+       {(dir / "prof.toml").string() + ":" + prof_line + ": ", "profile file /dev/zero is not a regular file"}},
+      {"calibrate --measured /dev/zero", {"measured profile file /dev/zero is not a regular file"}},
+  };
+  for (const Refusal& c : cases) check_refused(run_linerlife(c.args + " --out " + out.string(), 30), c, out);
+  fs::remove_all(dir);
+}
+
 TEST_CASE("measured profile files given to calibrate exit 2 naming the file, line and value", "[app][cli][input]") {
   const fs::path dir = temp_dir("bad_scans");
   const fs::path out = dir / "cal";
