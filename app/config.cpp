@@ -226,6 +226,13 @@ void check_and_resolve(Config& c) {
   } else {
     c.mill.speed_rpm = *c.speed_rpm;
     const double phi = c.mill.speed_rpm / nc;
+    if (phi < kMinSpeedFractionCritical)
+      fail_at(c, "mill.speed_rpm",
+              fmt::format("speed_rpm = {} is only {:.3g} of the critical speed ({:.3f} rpm for the diameter inside the "
+                          "liners, {:.4f} m): below {} of critical the charge does not tumble, it creeps up the shell "
+                          "and slides back; allowed {:.4g} <= speed_rpm < {:.3f}",
+                          c.mill.speed_rpm, phi, nc, lm.effective_diameter_m, kMinSpeedFractionCritical,
+                          kMinSpeedFractionCritical * nc, nc));
     if (phi >= 1.0)
       fail_at(c, "mill.speed_rpm",
               fmt::format("speed_rpm = {} is {:.3f} of the critical speed ({:.3f} rpm for the diameter inside the "

@@ -151,6 +151,58 @@ TEST_CASE("input files that are devices or larger than 10 MB are refused naming 
   fs::remove_all(dir);
 }
 
+// Values inside the old ranges that hung a run, ended in bad_alloc or failed
+// as a simulation (a review, reproduced on the binary before the fix): each is
+// now refused at its line with the range that works, before any work. Every
+// run has a time limit, so a value that hangs again fails the test (124).
+TEST_CASE("values that hung, ran out of memory or failed inside are refused at their line with the range",
+          "[app][cli][input]") {
+  const fs::path dir = temp_dir("bad_ranges");
+  const fs::path out = dir / "out";
+  struct Case {
+    std::string old_line, new_line, command;  // command: FILE is put after its first word
+    std::vector<std::string> says;
+  };
+  const std::vector<Case> cases = {
+      // charge --revolutions 1 ran for over a minute
+      {"speed_rpm = ", "speed_rpm = 1e-9", "charge --revolutions 1",
+       {"speed_rpm = 1e-09 is only 7.46e-11 of the critical speed", "below 0.05 of critical",
+        "allowed 0.6701 <= speed_rpm < 13.402"}},
+      {"speed_rpm = ", "speed_fraction_critical = 0.01", "charge --revolutions 1",
+       {"[mill] speed_fraction_critical = 0.01: out of range; allowed 0.05 <= value < 1"}},
+      // hung in the DEM
+      {"# collision_time_s = ", "collision_time_s = 1e-12", "charge --model dem --revolutions 1",
+       {"[dem] collision_time_s = 1e-12: out of range; allowed 1e-05 <= value <= 1 s"}},
+      // exit 3 with a time of 150 digits
+      {"# stiffness = ", "stiffness = 1e-300", "charge --model dem --revolutions 1",
+       {"[dem] stiffness = 1e-300: out of range; allowed 10000 <= value"}},
+      // bad_alloc
+      {"element_size_m = ", "element_size_m = 1e-9", "geometry",
+       {"[liner] element_size_m = 1e-09: out of range; allowed 0.001 <= value <= 1 m"}},
+      // inside the old range 1..400, but always refused as a top wider than 1e-15 m
+      {"segments = ", "segments = 1", "geometry", {"[liner] segments = 1: out of range; allowed 2 <= value <= 400"}},
+      // blamed coarse_grain = 1 for the discs that do not fit
+      {"# rock_diameter_max_m = ", "rock_diameter_max_m = 0.9", "charge --model dem --revolutions 1",
+       {"rock_diameter_max_m = 0.9 m: [dem] the ", "discs of this charge do not fit in the mill",
+        "as tall as the largest disc, this rock", "lower rock_diameter_max_m"}},
+  };
+  for (const Case& c : cases) {
+    const std::string text = defaults_with(c.old_line, c.new_line);
+    write_file(dir / "c.toml", text);
+    const size_t at = text.find("\n" + c.new_line + "\n");
+    REQUIRE(at != std::string::npos);
+    const std::string line = std::to_string(2 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+    const std::string file = (dir / "c.toml").string();
+    const auto sp = c.command.find(' ');
+    const std::string args = c.command.substr(0, sp) + " " + file + (sp == std::string::npos ? "" : c.command.substr(sp)) +
+                             " --out " + out.string();
+    Refusal r{args, c.says};
+    r.says.push_back(file + ":" + line + ": ");
+    check_refused(run_linerlife(args, 30), r, out);
+  }
+  fs::remove_all(dir);
+}
+
 TEST_CASE("measured profile files given to calibrate exit 2 naming the file, line and value", "[app][cli][input]") {
   const fs::path dir = temp_dir("bad_scans");
   const fs::path out = dir / "cal";

@@ -150,6 +150,44 @@ TEST_CASE("physically impossible mills are refused naming the key and the line",
   refused(edited("liner", "low_lifter_height_m", "0.1"), {"only with pattern"});
 }
 
+TEST_CASE("the low lifter of a hi-lo liner is refused under its own key", "[app][config][input]") {
+  // a review: low_lifter_height_m = 1.5 was reported as "lifter_height_m = 1.5 m" (the line was right)
+  const std::string t = edited_text(
+      edited_text(edited("liner", "pattern", "\"hi-lo\""), "liner", "low_lifter_height_m", "1.5"), "liner",
+      "low_lifter_top_width_m", "0.1");
+  refused(t, {"mill.toml:" + std::to_string(line_of(t, "low_lifter_height_m = 1.5")) +
+                  ": low_lifter_height_m = 1.5 m: a lifter taller than a quarter of the shell radius"});
+  const std::string w = edited_text(
+      edited_text(edited("liner", "pattern", "\"hi-lo\""), "liner", "low_lifter_height_m", "0.15"), "liner",
+      "low_lifter_top_width_m", "0.6");
+  refused(w, {"mill.toml:" + std::to_string(line_of(w, "low_lifter_top_width_m = 0.6")) +
+                  ": low_lifter_top_width_m = 0.6 m: must be > 0 and narrower than the segment"});
+}
+
+TEST_CASE("the declared ranges are the ones that work", "[app][config][input]") {
+  // segments = 1 was inside 1..400 but always refused by the lifter's top
+  // width (a segment of the whole ring has no chord); 2 rows build
+  refused(edited("liner", "segments", "1"), {"segments = 1: out of range; allowed 2 <= value <= 400"});
+  CHECK(load_config_text(edited("liner", "segments", "2"), "mill.toml", ".").liner.segments == 2);
+  // a mill below 0.05 of critical does not tumble; its charge runs never ended
+  refused(edited("mill", "speed_rpm", "1e-9"),
+          {"speed_rpm = 1e-09 is only", "allowed 0.6701 <= speed_rpm < 13.402"});
+  refused(edited("mill", "speed_rpm", "0.67"), {"speed_rpm = 0.67 is only 0.05 of the critical speed"});
+  CHECK_NOTHROW(load_config_text(edited("mill", "speed_rpm", "0.671"), "mill.toml", "."));
+  refused(edited_text(removed("speed_rpm"), "mill", "speed_fraction_critical", "0.04"),
+          {"speed_fraction_critical = 0.04: out of range; allowed 0.05 <= value < 1"});
+  CHECK_NOTHROW(load_config_text(edited_text(removed("speed_rpm"), "mill", "speed_fraction_critical", "0.05"),
+                                 "mill.toml", "."));
+  // elements finer than 1 mm (1e-9 ended in bad_alloc)
+  refused(edited("liner", "element_size_m", "1e-9"), {"element_size_m = 1e-09: out of range", "0.001 <= value"});
+  // DEM contacts: 1e-12 s hung, stiffness 1e-300 failed as a simulation
+  const std::string dem = default_config_text() + "\n[dem]\n";
+  refused(dem + "collision_time_s = 1e-12\n", {"collision_time_s = 1e-12: out of range", "1e-05 <= value <= 1 s"});
+  refused(dem + "stiffness = 1e-300\n", {"stiffness = 1e-300: out of range", "10000 <= value"});
+  CHECK_NOTHROW(load_config_text(dem + "collision_time_s = 1e-5\n", "mill.toml", "."));
+  CHECK_NOTHROW(load_config_text(dem + "stiffness = 1e4\n", "mill.toml", "."));
+}
+
 TEST_CASE("media between asymmetric lifters: the gap is one lifter's side ahead and the next one's behind",
           "[app][config][input]") {
   // The spacing at the plate reported by the refusal (ball_diameter_m = 0.3),
