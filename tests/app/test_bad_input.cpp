@@ -282,6 +282,11 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
       {"compare --vary liner.lifter_height_m=0.23,0.25 --vary liner.face_angle_leading_deg=20,-5" + o,
        {"--vary liner.lifter_height_m=0.23 --vary liner.face_angle_leading_deg=-5: ", "face_angle_leading_deg = -5"}},
       {"compare --vary liner.lifter_height_m=0.23,0.25 --jobs -1" + o, {"--jobs -1", "allowed 1 <= value"}},
+      // a string key's values need no quotes (they were a TOML syntax error blamed on the configuration)
+      {"compare --vary mill.rotation=ccw,sideways" + o,
+       {"--vary mill.rotation=sideways: [mill] rotation = \"sideways\": allowed one of \"ccw\", \"cw\""}},
+      {"compare --vary mill.diameter_m=big,10" + o,
+       {"--vary mill.diameter_m=big: big is not a value for [mill] diameter_m; allowed 0.1 < value <= 15 m"}},
       {"calibrate --measured " + csv + " --jobs -2" + o, {"--jobs -2", "allowed 1 <= value"}},
       {"plot" + o, {"RESULTS is required"}},
       {"plot " + (dir / "missing.h5").string() + o, {"results file", "missing.h5 does not exist"}},

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "app/config.h"
+#include "app/config_edit.h"
 #include "forecast/calendar.h"
 #include "geometry/errors.h"
 
@@ -271,4 +272,19 @@ TEST_CASE("forecast dates, availability and shutdowns load and are checked", "[a
   refused(edited("forecast", "shutdowns", "[{ start = 2027-06-01, days = -2 }]"), {"shutdowns", "0 < days"});
   refused(edited("forecast", "method", "\"rk4\""), {"method = \"rk4\"", "\"ode\", \"amplify\", \"euler\""});
   refused(edited("forecast", "rtol", "0.0"), {"rtol = 0:", "out of range"});
+}
+
+TEST_CASE("a varied string key takes its value with or without quotes", "[app][config][input]") {
+  // compare --vary mill.rotation=ccw,cw was a TOML syntax error blamed on the configuration
+  const Config c = load_default_config();
+  CHECK(c.mill.rotation == Rotation::Ccw);
+  CHECK(config_with(c, "mill.rotation", "cw", "--vary").mill.rotation == Rotation::Cw);
+  CHECK(config_with(c, "mill.rotation", "\"cw\"", "--vary").mill.rotation == Rotation::Cw);
+  CHECK(config_with(c, "liner.pattern", "uniform", "--vary").pattern == "uniform");
+  CHECK_THROWS_WITH(config_with(c, "mill.rotation", "left", "--vary"),
+                    Catch::Contains("--vary mill.rotation=left: [mill] rotation = \"left\": allowed one of"));
+  // a value that is no TOML at all is the option's fault, with what is allowed
+  CHECK_THROWS_WITH(config_with(c, "mill.diameter_m", "big", "--vary"),
+                    Catch::Contains("--vary mill.diameter_m=big: big is not a value for [mill] diameter_m; allowed 0.1 < "
+                                    "value <= 15 m"));
 }
