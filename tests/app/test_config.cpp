@@ -254,11 +254,11 @@ TEST_CASE("every configuration key is documented", "[app][config][docs]") {
 
 TEST_CASE("forecast dates, availability and shutdowns load and are checked", "[app][config][input]") {
   std::string t = edited("forecast", "start_date", "2028-02-29");
-  t = edited_text(t, "forecast", "shutdowns", "[{ start = 2028-06-01, days = 7 }, { start = 2028-12-24, days = 3.5 }]");
+  t = edited_text(t, "forecast", "shutdowns", "[{ start = 2028-06-01, days = 7 }, { start = 2028-12-24, days = 3.0 }]");
   const Config c = load_config_text(t, "f.toml", ".");
   CHECK(iso_date(c.forecast.calendar.start) == "2028-02-29");
   REQUIRE(c.forecast.calendar.shutdowns.size() == 2);
-  CHECK(c.forecast.calendar.shutdowns[1].days == 3.5);
+  CHECK(c.forecast.calendar.shutdowns[1].days == 3);
   // and round-trips through the printed file
   const Config d = load_config_text(config_to_toml(c, true), "g.toml", ".");
   CHECK(config_to_toml(d, false) == config_to_toml(c, false));
@@ -268,7 +268,7 @@ TEST_CASE("forecast dates, availability and shutdowns load and are checked", "[a
   refused(edited("forecast", "start_date", "2027-13-01"), {"TOML syntax error"});
   refused(edited("forecast", "availability", "0.0"), {"availability = 0:", "0 < value <= 1"});
   refused(edited("forecast", "availability", "1.2"), {"availability = 1.2", "out of range"});
-  refused(edited("forecast", "shutdowns", "[{ start = 2027-06-01 }]"), {"shutdowns", "expected a list"});
+  refused(edited("forecast", "shutdowns", "{ start = 2027-06-01, days = 7 }"), {"shutdowns", "expected a list"});
   refused(edited("forecast", "shutdowns", "[{ start = 2027-06-01, days = -2 }]"), {"shutdowns", "0 < days"});
   refused(edited("forecast", "method", "\"rk4\""), {"method = \"rk4\"", "\"ode\", \"amplify\", \"euler\""});
   refused(edited("forecast", "rtol", "0.0"), {"rtol = 0:", "out of range"});
@@ -287,4 +287,33 @@ TEST_CASE("a varied string key takes its value with or without quotes", "[app][c
   CHECK_THROWS_WITH(config_with(c, "mill.diameter_m", "big", "--vary"),
                     Catch::Contains("--vary mill.diameter_m=big: big is not a value for [mill] diameter_m; allowed 0.1 < "
                                     "value <= 15 m"));
+}
+
+TEST_CASE("a shutdown entry that is wrong is named with what is wrong in it", "[app][config][input]") {
+  // a review: an extra field, a missing days and a quoted start all gave the same "expected a list"
+  auto shut = [](const std::string& list) { return edited("forecast", "shutdowns", list); };
+  const std::string ok = "{ start = 2027-03-01, days = 2 }, ";
+  const std::string t = shut("[" + ok + "{ start = 2027-06-01, days = 7, reason = \"relining\" }]");
+  refused(t, {"mill.toml:" + std::to_string(line_of(t, "shutdowns = ")) + ": [forecast] shutdowns: shutdown 2 of 2: "
+              "unknown field \"reason\""});
+  refused(shut("[{ start = 2027-06-01 }]"), {"shutdown 1 of 1: missing days"});
+  refused(shut("[{ days = 7 }]"), {"shutdown 1 of 1: missing start"});
+  refused(shut("[" + ok + "{ start = \"2027-06-01\", days = 7 }]"),
+          {"shutdown 2 of 2: start = \"2027-06-01\" is not a date (write it unquoted"});
+  refused(shut("[{ start = 2027-06-01, days = \"a week\" }]"), {"shutdown 1 of 1: days = \"a week\" is not a number"});
+  refused(shut("[7]"), {"shutdown 1 of 1: 7 is not a table"});
+  // whole days, as the key says (7.5 was taken as 8 stopped days)
+  refused(shut("[{ start = 2027-06-01, days = 7.5 }]"), {"shutdown 1 of 1: days = 7.5: the mill stops for whole calendar days"});
+  CHECK(load_config_text(shut("[{ start = 2027-06-01, days = 7.0 }]"), "mill.toml", ".").forecast.calendar.shutdowns[0].days == 7);
+  // none before the start of the calendar
+  refused(shut("[" + ok + "{ start = 2026-12-24, days = 3 }]"),
+          {"shutdown 2 of 2 starts on 2026-12-24, before start_date = 2027-01-01"});
+  CHECK_NOTHROW(load_config_text(shut("[{ start = 2027-01-01, days = 3 }]"), "mill.toml", "."));
+  // year 0 is a TOML date but no calendar's (start_date became 2000-01-01)
+  {
+    const std::string z = edited("forecast", "start_date", "0000-01-01");
+    refused(z, {"mill.toml:" + std::to_string(line_of(z, "start_date = 0000-01-01")) +
+                ": [forecast] start_date = 0000-01-01: allowed a date from 0001-01-01 to 9999-12-31"});
+  }
+  refused(shut("[{ start = 0000-06-01, days = 3 }]"), {"shutdown 1 of 1: start = 0000-06-01: allowed a date from 0001-01-01"});
 }
