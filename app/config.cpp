@@ -428,6 +428,25 @@ Config load_config_text(const std::string& text, const std::string& source, cons
                                      source, (*arr)[i].source().begin.line, i + 1, list.size(), iso_date(list[i].start),
                                      iso_date(c.forecast.calendar.start)));
   }
+  // The horizon's date must be one a result can carry: a relining date after
+  // 9999-12-31 has no ISO date (the calendar stopped at 1,000,000 days
+  // before, a year-4764 date for a life that ends in 13434).
+  {
+    const Calendar& cal = c.forecast.calendar;
+    const double hours = c.forecast.max_operating_hours;
+    const CivilDate end = cal.date_after(hours);
+    if (end.year > 9999) {
+      const double days_max =
+          static_cast<double>(days_from_civil({9999, 12, 31}) - days_from_civil(cal.start) + 1);  // to its midnight
+      fail_at(c, "forecast.max_operating_hours",
+              fmt::format("max_operating_hours = {} h ends on {}, at availability = {} from start_date = {}{}: a "
+                          "relining date after 9999-12-31 cannot be written as a date; allowed max_operating_hours "
+                          "<= {:.0f} h here, or a higher availability",
+                          hours, iso_date(end), cal.availability, iso_date(cal.start),
+                          cal.shutdowns.empty() ? "" : fmt::format(" with {} shutdowns", cal.shutdowns.size()),
+                          std::floor(cal.operating_hours_after(days_max))));
+    }
+  }
   check_and_resolve(c);
   return c;
 }

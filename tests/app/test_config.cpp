@@ -317,3 +317,16 @@ TEST_CASE("a shutdown entry that is wrong is named with what is wrong in it", "[
   }
   refused(shut("[{ start = 0000-06-01, days = 3 }]"), {"shutdown 1 of 1: start = 0000-06-01: allowed a date from 0001-01-01"});
 }
+
+TEST_CASE("a forecast horizon whose date would pass 9999-12-31 is refused", "[app][config][input]") {
+  // 1e6 h at availability 0.01 ends in the year 13434, which no ISO date holds
+  std::string t = edited("forecast", "availability", "0.01");
+  t = edited_text(t, "forecast", "max_operating_hours", "1e6");
+  refused(t, {"mill.toml:" + std::to_string(line_of(t, "max_operating_hours = 1e6")) +
+                  ": max_operating_hours = 1000000 h ends on +13434-12-12, at availability = 0.01 from start_date = "
+                  "2027-01-01: a relining date after 9999-12-31 cannot be written as a date; allowed "
+                  "max_operating_hours <= 698898 h here"});
+  CHECK_NOTHROW(load_config_text(edited_text(t, "forecast", "max_operating_hours", "698898"), "mill.toml", "."));
+  // a start late in the year 9999 leaves room for no default horizon
+  refused(edited("forecast", "start_date", "9999-01-01"), {"max_operating_hours = 50000 h ends on +10005-"});
+}
