@@ -258,6 +258,13 @@ void check_and_resolve(Config& c) {
   } catch (const InputError& e) {
     fail_at(c, e.key(), e.what());
   }
+  // The low lifters of a hi-lo liner are the lower ones (after the geometry,
+  // which names a low lifter that is no mill liner at all under its own key).
+  if (L.hi_lo && L.low.lifter_height_m > L.design.lifter_height_m)
+    fail_at(c, "liner.low_lifter_height_m",
+            fmt::format("low_lifter_height_m = {} m is taller than lifter_height_m = {} m: the low lifters of a hi-lo "
+                        "pattern must not be taller than the high ones; allowed 0 <= low_lifter_height_m <= {} m",
+                        L.low.lifter_height_m, L.design.lifter_height_m, L.design.lifter_height_m));
   const LinerMetrics lm = metrics(surface, m.rotation, L.density_kg_m3);
   const double nc = critical_speed_rpm(lm.effective_diameter_m);
   if (c.speed_fraction_critical) {

@@ -330,3 +330,25 @@ TEST_CASE("a forecast horizon whose date would pass 9999-12-31 is refused", "[ap
   // a start late in the year 9999 leaves room for no default horizon
   refused(edited("forecast", "start_date", "9999-01-01"), {"max_operating_hours = 50000 h ends on +10005-"});
 }
+
+TEST_CASE("a low lifter taller than the high one, and laws that say two things, are refused", "[app][config][input]") {
+  // hi-lo: the low lifters are the lower ones
+  const std::string t = edited_text(
+      edited_text(edited("liner", "pattern", "\"hi-lo\""), "liner", "low_lifter_height_m", "0.3"), "liner",
+      "low_lifter_top_width_m", "0.1");
+  refused(t, {"mill.toml:" + std::to_string(line_of(t, "low_lifter_height_m = 0.3")) +
+                  ": low_lifter_height_m = 0.3 m is taller than lifter_height_m = 0.25 m",
+              "allowed 0 <= low_lifter_height_m <= 0.25 m"});
+  CHECK_NOTHROW(load_config_text(edited_text(t, "liner", "low_lifter_height_m", "0.25"), "mill.toml", "."));
+  // "none" beside laws was dropped; an empty list meant no wear
+  {
+    const std::string w = edited("wear", "laws", "\"none, abrasion/archard\"");
+    refused(w, {"mill.toml:" + std::to_string(line_of(w, "laws = \"none")) +
+                    ": laws = \"none, abrasion/archard\": \"none\" (no wear) must stand alone"});
+  }
+  refused(edited("wear", "laws", "\"\""), {"laws = \"\": no wear law named", "\"none\" for no wear"});
+  refused(edited("wear", "laws", "\" , \""), {"no wear law named"});
+  CHECK(load_config_text(edited("wear", "laws", "\"none\""), "mill.toml", ".").wear.laws.empty());
+  CHECK(load_config_text(edited("wear", "laws", "\"abrasion/archard\""), "mill.toml", ".").wear.laws ==
+        std::vector<std::string>{"abrasion/archard"});
+}
