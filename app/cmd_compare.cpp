@@ -327,7 +327,8 @@ void register_compare(CLI::App& app, std::function<int()>& run) {
   auto* cmd = app.add_subcommand("compare", "Forecasts for several lifter designs or operating choices side by side");
   cmd->add_option("CONFIG", o->configs, "Two or more configurations, or one with --vary");
   cmd->add_option("--vary", o->vary,
-                  "KEY=v1,v2,... one key (section.key) over several values; repeated: every combination")
+                  "KEY=v1,v2,... one key (section.key) over several values (a string key's without quotes: "
+                  "mill.rotation=ccw,cw); repeated: every combination")
       ->expected(1)
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);

@@ -12,6 +12,7 @@
 
 #include "geometry/build_liner_surface.h"
 #include "geometry/errors.h"
+#include "geometry/input_file.h"
 #include "geometry/measured_profile.h"
 #include "geometry/metrics.h"
 #include "forecast/calendar.h"
@@ -77,6 +78,44 @@ std::string node_text(const toml::node& n) {
   return t;
 }
 
+/// The entries of [forecast] shutdowns, each { start = YYYY-MM-DD, days = N }
+/// with N whole days, 0 < N <= 3650; an entry that is not is refused naming
+/// its number (1-based), its line and what is wrong with it.
+std::vector<Shutdown> shutdown_list(const toml::array& arr, const std::string& source, const std::string& sname,
+                                    const std::string& kname) {
+  std::vector<Shutdown> list;
+  for (size_t i = 0; i < arr.size(); ++i) {
+    const toml::node& item = arr[i];
+    auto bad = [&](const std::string& what) {
+      throw InputError(sname + "." + kname,
+                       fmt::format("{}:{}: [{}] {}: shutdown {} of {}: {}; each is {{ start = YYYY-MM-DD, days = N }} "
+                                   "with N whole days, 0 < days <= 3650",
+                                   source, item.source().begin.line, sname, kname, i + 1, arr.size(), what));
+    };
+    const toml::table* tbl = item.as_table();
+    if (!tbl) bad(fmt::format("{} is not a table {{ start = ..., days = ... }}", node_text(item)));
+    for (auto&& [fk, fv] : *tbl)
+      if (fk.str() != "start" && fk.str() != "days")
+        bad(fmt::format("unknown field \"{}\" (the fields are start and days)", std::string(fk.str())));
+    const toml::node* st = tbl->get("start");
+    const toml::node* dy = tbl->get("days");
+    if (!st) bad("missing start");
+    if (!dy) bad("missing days");
+    if (!st->as_date())
+      bad(fmt::format("start = {} is not a date (write it unquoted: start = 2027-06-01)", node_text(*st)));
+    const toml::date dd = st->as_date()->get();
+    if (!valid_date(dd.year, dd.month, dd.day))
+      bad(fmt::format("start = {}: allowed a date from 0001-01-01 to 9999-12-31", node_text(*st)));
+    if (!(dy->as_floating_point() || dy->as_integer())) bad(fmt::format("days = {} is not a number", node_text(*dy)));
+    const double days =
+        dy->as_floating_point() ? dy->as_floating_point()->get() : static_cast<double>(dy->as_integer()->get());
+    if (!(days > 0) || days > 3650) bad(fmt::format("a shutdown of {} days", days));
+    if (days != std::floor(days)) bad(fmt::format("days = {}: the mill stops for whole calendar days", days));
+    list.push_back({{dd.year, dd.month, dd.day}, days});
+  }
+  return list;
+}
+
 bool in_range(const KeySpec& k, double v) {
   if (!std::isfinite(v)) return false;
   if (k.lo_open ? !(v > k.lo) : !(v >= k.lo)) return false;
@@ -89,7 +128,8 @@ bool in_range(const KeySpec& k, double v) {
 std::string KeySpec::allowed() const {
   if (kind == ConfigValue::Kind::Date) return "a date YYYY-MM-DD (unquoted TOML date)";
   if (kind == ConfigValue::Kind::Shutdowns)
-    return "a list [{ start = YYYY-MM-DD, days = N }, ...] with days > 0 (may be empty)";
+    return "a list [{ start = YYYY-MM-DD, days = N }, ...] with N whole days, 0 < days <= 3650, none starting "
+           "before start_date (may be empty)";
   if (kind == ConfigValue::Kind::String) {
     if (choices.empty()) return "a string";
     std::string s = "one of ";
@@ -218,6 +258,13 @@ void check_and_resolve(Config& c) {
   } catch (const InputError& e) {
     fail_at(c, e.key(), e.what());
   }
+  // The low lifters of a hi-lo liner are the lower ones (after the geometry,
+  // which names a low lifter that is no mill liner at all under its own key).
+  if (L.hi_lo && L.low.lifter_height_m > L.design.lifter_height_m)
+    fail_at(c, "liner.low_lifter_height_m",
+            fmt::format("low_lifter_height_m = {} m is taller than lifter_height_m = {} m: the low lifters of a hi-lo "
+                        "pattern must not be taller than the high ones; allowed 0 <= low_lifter_height_m <= {} m",
+                        L.low.lifter_height_m, L.design.lifter_height_m, L.design.lifter_height_m));
   const LinerMetrics lm = metrics(surface, m.rotation, L.density_kg_m3);
   const double nc = critical_speed_rpm(lm.effective_diameter_m);
   if (c.speed_fraction_critical) {
@@ -225,6 +272,13 @@ void check_and_resolve(Config& c) {
   } else {
     c.mill.speed_rpm = *c.speed_rpm;
     const double phi = c.mill.speed_rpm / nc;
+    if (phi < kMinSpeedFractionCritical)
+      fail_at(c, "mill.speed_rpm",
+              fmt::format("speed_rpm = {} is only {:.3g} of the critical speed ({:.3f} rpm for the diameter inside the "
+                          "liners, {:.4f} m): below {} of critical the charge does not tumble, it creeps up the shell "
+                          "and slides back; allowed {:.4g} <= speed_rpm < {:.3f}",
+                          c.mill.speed_rpm, phi, nc, lm.effective_diameter_m, kMinSpeedFractionCritical,
+                          kMinSpeedFractionCritical * nc, nc));
     if (phi >= 1.0)
       fail_at(c, "mill.speed_rpm",
               fmt::format("speed_rpm = {} is {:.3f} of the critical speed ({:.3f} rpm for the diameter inside the "
@@ -323,33 +377,18 @@ Config load_config_text(const std::string& text, const std::string& source, cons
         case ConfigValue::Kind::Date:
           if (auto d = knode.as_date()) {
             const toml::date dd = d->get();
+            // TOML allows year 0, which the calendar has not (it became 2000-01-01)
+            if (!valid_date(dd.year, dd.month, dd.day))
+              throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: allowed a date from 0001-01-01 to 9999-12-31",
+                                                 source, line, sname, kname, node_text(knode)));
             v = ConfigValue::Date(iso_date({dd.year, dd.month, dd.day}));
             ok = true;
           }
           break;
         case ConfigValue::Kind::Shutdowns:
           if (auto arr = knode.as_array()) {
-            std::vector<Shutdown> list;
+            v = ConfigValue::List(shutdown_list(*arr, source, sname, kname));
             ok = true;
-            for (auto&& item : *arr) {
-              const toml::table* tbl = item.as_table();
-              const toml::node* st = tbl ? tbl->get("start") : nullptr;
-              const toml::node* dy = tbl ? tbl->get("days") : nullptr;
-              if (!tbl || !st || !dy || !st->as_date() || !(dy->as_floating_point() || dy->as_integer()) ||
-                  tbl->size() != 2) {
-                ok = false;
-                break;
-              }
-              const toml::date dd = st->as_date()->get();
-              const double days = dy->as_floating_point() ? dy->as_floating_point()->get()
-                                                          : static_cast<double>(dy->as_integer()->get());
-              if (!(days > 0) || days > 3650)
-                throw InputError(sname + "." + kname,
-                                 fmt::format("{}:{}: [{}] {}: a shutdown of {} days; allowed 0 < days <= 3650", source,
-                                             line, sname, kname, days));
-              list.push_back({{dd.year, dd.month, dd.day}, days});
-            }
-            if (ok) v = ConfigValue::List(std::move(list));
           }
           break;
       }
@@ -383,6 +422,38 @@ Config load_config_text(const std::string& text, const std::string& source, cons
                                                   k.section, k.name, k.help, k.allowed()));
     if (k.default_value) k.set(c, *k.default_value);
   }
+  // shutdowns are days of the forecast's calendar, which begins on start_date
+  if (const toml::array* arr = root["forecast"]["shutdowns"].as_array()) {
+    const auto& list = c.forecast.calendar.shutdowns;
+    const long long start = days_from_civil(c.forecast.calendar.start);
+    for (size_t i = 0; i < list.size() && i < arr->size(); ++i)
+      if (days_from_civil(list[i].start) < start)
+        throw InputError("forecast.shutdowns",
+                         fmt::format("{}:{}: [forecast] shutdowns: shutdown {} of {} starts on {}, before start_date "
+                                     "= {}; the forecast's calendar begins on start_date, so a shutdown must start "
+                                     "on it or later",
+                                     source, (*arr)[i].source().begin.line, i + 1, list.size(), iso_date(list[i].start),
+                                     iso_date(c.forecast.calendar.start)));
+  }
+  // The horizon's date must be one a result can carry: a relining date after
+  // 9999-12-31 has no ISO date (the calendar stopped at 1,000,000 days
+  // before, a year-4764 date for a life that ends in 13434).
+  {
+    const Calendar& cal = c.forecast.calendar;
+    const double hours = c.forecast.max_operating_hours;
+    const CivilDate end = cal.date_after(hours);
+    if (end.year > 9999) {
+      const double days_max =
+          static_cast<double>(days_from_civil({9999, 12, 31}) - days_from_civil(cal.start) + 1);  // to its midnight
+      fail_at(c, "forecast.max_operating_hours",
+              fmt::format("max_operating_hours = {} h ends on {}, at availability = {} from start_date = {}{}: a "
+                          "relining date after 9999-12-31 cannot be written as a date; allowed max_operating_hours "
+                          "<= {:.0f} h here, or a higher availability",
+                          hours, iso_date(end), cal.availability, iso_date(cal.start),
+                          cal.shutdowns.empty() ? "" : fmt::format(" with {} shutdowns", cal.shutdowns.size()),
+                          std::floor(cal.operating_hours_after(days_max))));
+    }
+  }
   check_and_resolve(c);
   return c;
 }
@@ -393,6 +464,7 @@ Config load_config_file(const std::string& path) {
   if (!fs::exists(path, ec)) throw InputError(path, fmt::format("configuration file {} does not exist", path));
   if (fs::is_directory(path, ec))
     throw InputError(path, fmt::format("configuration file {} is a directory, not a TOML file", path));
+  require_regular_input_file(path, "configuration file");
   std::ifstream f(path, std::ios::binary);
   if (!f) throw InputError(path, fmt::format("configuration file {} cannot be read (permissions?)", path));
   std::stringstream ss;

@@ -3,6 +3,7 @@
 #include <cctype>
 
 #include <fmt/format.h>
+#include <toml++/toml.h>
 
 #include "geometry/errors.h"
 
@@ -15,14 +16,33 @@ Config config_with(const Config& c, const std::string& section_key, const std::s
                                        "liner.face_angle_leading_deg",
                                        what, section_key));
   const std::string sec = section_key.substr(0, dot), key = section_key.substr(dot + 1);
-  if (!config_schema().find(sec, key))
-    throw InputError(what, fmt::format("{}: unknown configuration key [{}] {}", what, sec, key));
+  const KeySpec* spec = config_schema().find(sec, key);
+  if (!spec) throw InputError(what, fmt::format("{}: unknown configuration key [{}] {}", what, sec, key));
+  // A string key's value from the command line comes without TOML's quotes
+  // (--vary mill.rotation=ccw,cw): quote it, unless it is quoted already.
+  std::string toml_value = value;
+  if (spec->kind == ConfigValue::Kind::String && (value.empty() || (value.front() != '"' && value.front() != '\''))) {
+    toml_value = "\"";
+    for (char ch : value) {
+      if (ch == '"' || ch == '\\') toml_value += '\\';
+      toml_value += ch;
+    }
+    toml_value += '"';
+  }
+  // A value that is not TOML at all (--vary mill.diameter_m=big) is the
+  // option's fault, not a syntax error of the configuration file.
+  try {
+    (void)toml::parse("v = " + toml_value + "\n", std::string("--vary"));
+  } catch (const toml::parse_error&) {
+    throw InputError(what, fmt::format("{} {}={}: {} is not a value for [{}] {}; allowed {}", what, section_key, value,
+                                       value, sec, key, spec->allowed()));
+  }
   std::string text = config_to_toml(c, false);
   const auto s = text.find("\n[" + sec + "]\n");
   if (s == std::string::npos) throw std::logic_error("config_with: section missing from the printed configuration");
   const auto next = text.find("\n[", s + 1);
   const auto k = text.find("\n" + key + " = ", s);
-  const std::string line = key + " = " + value;
+  const std::string line = key + " = " + toml_value;
   if (k != std::string::npos && (next == std::string::npos || k < next))
     text.replace(k + 1, text.find('\n', k + 1) - k - 1, line);
   else

@@ -5,6 +5,7 @@
 
 #include "app/config.h"
 #include "app/config_schema_util.h"
+#include "charge/dem/dem_model.h"
 #include "geometry/errors.h"
 
 namespace linerlife {
@@ -21,9 +22,9 @@ KeySpec dem_real(const char* name, const char* unit, const char* help, double lo
 
 /// A [dem] number that may be absent (stored as 0 = derive it).
 KeySpec dem_opt_real(const char* name, const char* unit, const char* help, double lo, double hi, bool hi_open,
-                     double DemSpec::*field, const char* note) {
+                     double DemSpec::*field, const char* note, bool lo_open = true) {
   return opt_real_key(
-      "dem", name, unit, help, lo, hi, true, hi_open, [field](Config& c, double v) { c.model.dem.*field = v; },
+      "dem", name, unit, help, lo, hi, lo_open, hi_open, [field](Config& c, double v) { c.model.dem.*field = v; },
       [field](const Config& c) -> std::optional<double> {
         const double v = c.model.dem.*field;
         if (v > 0) return v;
@@ -53,13 +54,14 @@ void add_dem_keys(Schema& s) {
                        "Rolling resistance mu_r (constant directional torque mu_r F_n R*), both contact kinds", 0.0,
                        0.5, false, false, 0.02, &DemSpec::rolling_resistance));
   k.push_back(dem_opt_real("collision_time_s", "s",
-                           "Contact duration of the real (not coarse-grained) discs; hertz: at the liner speed", 0.0,
-                           1.0, false, &DemSpec::collision_time_s,
-                           "default: from overlap_fraction; or give stiffness"));
+                           "Contact duration of the real (not coarse-grained) discs; hertz: at the liner speed (the "
+                           "default is about 1 ms; from 10 us: shorter takes over 100 times its steps)",
+                           kDemMinCollisionTimeS, 1.0, false, &DemSpec::collision_time_s,
+                           "default: from overlap_fraction; or give stiffness", false));
   k.push_back(dem_opt_real("stiffness", "N/m per m",
                            "Normal stiffness instead of collision_time_s: linear k_n [N/m per m], hertz k_h "
-                           "[N/m^1.5 per m]",
-                           0.0, 1e15, false, &DemSpec::stiffness, "alternative to collision_time_s"));
+                           "[N/m^1.5 per m] (softer than 1e4 no bed holds its discs apart)",
+                           kDemMinStiffness, 1e15, false, &DemSpec::stiffness, "alternative to collision_time_s", false));
   k.push_back(dem_real("overlap_fraction", "-",
                        "Default collision time: the smallest disc meeting the liner at the liner speed overlaps this "
                        "share of its diameter",

@@ -1,6 +1,7 @@
 // The [mill] and [liner] keys (DESIGN.md §4; issue 2 §2).
 #include "app/config.h"
 #include "app/config_schema_util.h"
+#include "geometry/build_liner_surface.h"
 
 namespace linerlife {
 
@@ -14,13 +15,15 @@ void add_mill_keys(Schema& s) {
                             0.0, 20.0, true, false, std::nullopt,
                             [](Config& c, double v) { c.mill.length_m = v; },
                             [](const Config& c) { return c.mill.length_m; }, true));
-  s.keys.push_back(opt_real_key("mill", "speed_rpm", "rpm", "Mill speed (give this or speed_fraction_critical)", 0.0,
-                                200.0, true, false, [](Config& c, double v) { c.speed_rpm = v; },
+  s.keys.push_back(opt_real_key("mill", "speed_rpm", "rpm", "Mill speed (give this or speed_fraction_critical); at least 0.05 of critical "
+                                "for the diameter inside the new liners, and below critical",
+                                0.0, 200.0, true, false, [](Config& c, double v) { c.speed_rpm = v; },
                                 [](const Config& c) { return c.speed_rpm; }, "or speed_fraction_critical"));
   s.keys.push_back(opt_real_key(
       "mill", "speed_fraction_critical", "-",
-      "Mill speed as a fraction of critical for the diameter inside the new liners (or give speed_rpm)", 0.0, 1.0,
-      true, true, [](Config& c, double v) { c.speed_fraction_critical = v; },
+      "Mill speed as a fraction of critical for the diameter inside the new liners (or give speed_rpm; below 0.05 "
+      "the charge does not tumble)",
+      kMinSpeedFractionCritical, 1.0, false, true, [](Config& c, double v) { c.speed_fraction_critical = v; },
       [](const Config& c) { return c.speed_fraction_critical; }, "alternative to speed_rpm: give exactly one"));
   s.keys.push_back(string_key("mill", "rotation", "Direction of rotation seen from the feed end", {"ccw", "cw"}, "ccw",
                               [](Config& c, const std::string& v) {
@@ -31,7 +34,10 @@ void add_mill_keys(Schema& s) {
 
 void add_liner_keys(Schema& s) {
   s.sections.push_back("liner");
-  s.keys.push_back(int_key("liner", "segments", "Lifter rows round the shell", 1, 400, true,
+  s.keys.push_back(int_key("liner", "segments",
+                           "Lifter rows round the shell (at least 2: one row's segment is the whole ring, which a "
+                           "lifter cannot fit and the remesh cannot wear)",
+                           kMinSegments, 400, true,
                            [](Config& c, long long v) { c.liner.segments = static_cast<int>(v); },
                            [](const Config& c) { return static_cast<long long>(c.liner.segments); }));
   auto design_key = [&](const char* name, const char* unit, const char* help, double lo, double hi, bool lo_open,
@@ -88,8 +94,9 @@ void add_liner_keys(Schema& s) {
                                   },
                                   "optional"));
   s.keys.push_back(real_key("liner", "element_size_m", "m",
-                            "Longest surface element (default from the convergence study in docs/geometry.md)", 0.0,
-                            1.0, true, false, std::nullopt,
+                            "Longest surface element (default from the convergence study in docs/geometry.md; at "
+                            "least 1 mm, a quarter of its finest run)",
+                            kMinElementSizeM, 1.0, false, false, std::nullopt,
                             [](Config& c, double v) { c.liner.element_size_m = v; },
                             [](const Config& c) { return c.liner.element_size_m; }, true));
   s.keys.push_back(int_key("liner", "lifter_grid_cells", "n of the n x n lifter grid (thesis §5.6, Table B.1)", 20,

@@ -1,6 +1,8 @@
 // The [wear] keys (issue 4; docs/models/wear.md). The law parameters are
 // generated from the law table in wear/wear_laws.cpp, so every law's
 // parameters appear here with the unit, range and default the law declares.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "app/config.h"
@@ -160,6 +162,26 @@ void resolve_wear_config(Config& c) {
   c.material.hardness_bhn = c.liner.hardness_bhn;
   c.material.ball.density_kg_m3 = c.charge.ball_density_kg_m3;
   c.wear.laws = parse_law_list(c.wear_laws_text);
+  // "none" is the whole list or absent: beside laws it was dropped, and an
+  // empty list meant no wear without saying so.
+  std::vector<std::string> tokens;  // as parse_law_list() splits them, "none" kept
+  std::string cur;
+  for (char ch : c.wear_laws_text + ",") {
+    if (ch == ',' || ch == ' ' || ch == '\t' || ch == '+') {
+      if (!cur.empty()) tokens.push_back(cur);
+      cur.clear();
+    } else {
+      cur += ch;
+    }
+  }
+  if (tokens.empty())
+    throw InputError("wear.laws", fmt::format("laws = \"{}\": no wear law named; give the laws separated by commas, or "
+                                              "\"none\" for no wear",
+                                              c.wear_laws_text));
+  if (tokens.size() > 1 && std::find(tokens.begin(), tokens.end(), "none") != tokens.end())
+    throw InputError("wear.laws", fmt::format("laws = \"{}\": \"none\" (no wear) must stand alone; give \"none\" or "
+                                              "the laws, not both",
+                                              c.wear_laws_text));
   validate_wear_spec(c.wear);
   validate_liner_material(c.material);
 }

@@ -1,7 +1,11 @@
 #include "forecast/calendar.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -32,7 +36,14 @@ CivilDate civil_from_days(long long z) {
   return d;
 }
 
-std::string iso_date(const CivilDate& d) { return fmt::format("{:04d}-{:02d}-{:02d}", d.year, d.month, d.day); }
+std::string iso_date(const CivilDate& d) {
+  // ISO 8601's four-digit year ends at 9999; beyond, its expanded form (a sign
+  // and more digits). The configuration refuses a forecast horizon that would
+  // need it (app/config.cpp), so a forecast's dates never do.
+  if (d.year > 9999 || d.year < 0)
+    return fmt::format("{}{:05d}-{:02d}-{:02d}", d.year < 0 ? '-' : '+', std::abs(d.year), d.month, d.day);
+  return fmt::format("{:04d}-{:02d}-{:02d}", d.year, d.month, d.day);
+}
 
 bool valid_date(int y, int m, int d) {
   if (m < 1 || m > 12 || d < 1 || y < 1 || y > 9999) return false;
@@ -51,34 +62,102 @@ bool parse_iso_date(const std::string& s, CivilDate& out) {
 
 namespace {
 
-/// Hours the mill runs on calendar day `day` (0 = the start day).
-double hours_on_day(const Calendar& c, long long day) {
-  const long long abs_day = days_from_civil(c.start) + day;
+/// Days counted one by one from the start, the hours added as the days pass:
+/// 100 years, more than any liner lasts. Beyond, the count goes by whole
+/// stretches between shutdowns (the same hours to rounding), so a life of any
+/// length is counted to its end; it stopped at 1,000,000 days before.
+constexpr long long kDailyDays = 36525;
+
+/// The shutdowns as half-open day ranges [begin, end) from the start day,
+/// sorted and merged; those over before the start are left out.
+std::vector<std::pair<long long, long long>> stops(const Calendar& c) {
+  const long long d0 = days_from_civil(c.start);
+  std::vector<std::pair<long long, long long>> r;
   for (const Shutdown& s : c.shutdowns) {
-    const long long b = days_from_civil(s.start);
-    if (abs_day >= b && abs_day < b + static_cast<long long>(std::ceil(s.days))) return 0.0;
+    const long long b = days_from_civil(s.start) - d0;
+    const long long e = b + static_cast<long long>(std::ceil(s.days));
+    if (e > 0 && e > b) r.emplace_back(b, e);
   }
-  return 24.0 * c.availability;
+  std::sort(r.begin(), r.end());
+  std::vector<std::pair<long long, long long>> merged;
+  for (const auto& iv : r)
+    if (!merged.empty() && iv.first <= merged.back().second)
+      merged.back().second = std::max(merged.back().second, iv.second);
+    else
+      merged.push_back(iv);
+  return merged;
 }
+
+/// Walks the calendar day by day, then stretch by stretch: the running days
+/// of the stops' gaps, each 24 * availability hours.
+class DayWalk {
+ public:
+  explicit DayWalk(const Calendar& c) : stops_(stops(c)), hours_(24.0 * c.availability) {}
+  /// Hours the mill runs on day `day`; days must be asked in increasing order.
+  double hours_on(long long day) {
+    while (next_ < stops_.size() && stops_[next_].second <= day) ++next_;
+    return next_ < stops_.size() && day >= stops_[next_].first ? 0.0 : hours_;
+  }
+  /// From `day` on, past the daily count: the first day of the next shutdown
+  /// at or after it (max: none), or `day` itself if it is a shutdown day.
+  long long run_end(long long day) {
+    while (next_ < stops_.size() && stops_[next_].second <= day) ++next_;
+    if (next_ == stops_.size()) return std::numeric_limits<long long>::max();
+    return std::max(day, stops_[next_].first);
+  }
+  long long stop_end() const { return stops_[next_].second; }  // after run_end(day) == day
+  double hours_per_day() const { return hours_; }
+
+ private:
+  std::vector<std::pair<long long, long long>> stops_;
+  double hours_;
+  size_t next_ = 0;
+};
 
 }  // namespace
 
 double Calendar::calendar_days_for(double operating_hours) const {
   if (operating_hours <= 0) return 0;
+  DayWalk walk(*this);
   double left = operating_hours;
-  for (long long day = 0; day < 1000000; ++day) {
-    const double h = hours_on_day(*this, day);
+  long long day = 0;
+  for (; day < kDailyDays; ++day) {
+    const double h = walk.hours_on(day);
     if (h > 0 && h >= left - 1e-9) return static_cast<double>(day) + std::min(1.0, left / h);
     left -= h;
   }
-  return 1e6;  // 2700 years: beyond any liner
+  const double h = walk.hours_per_day();
+  for (;;) {
+    const long long end = walk.run_end(day);
+    if (end == day) {  // a shutdown
+      day = walk.stop_end();
+      continue;
+    }
+    const double run_days = end == std::numeric_limits<long long>::max() ? HUGE_VAL : static_cast<double>(end - day);
+    if (left <= run_days * h + 1e-9) return static_cast<double>(day) + left / h;
+    left -= run_days * h;
+    day = end;
+  }
 }
 
 double Calendar::operating_hours_after(double calendar_days) const {
+  if (!(calendar_days > 0)) return 0;
+  DayWalk walk(*this);
   double hours = 0;
   const long long whole = static_cast<long long>(std::floor(calendar_days));
-  for (long long day = 0; day < whole; ++day) hours += hours_on_day(*this, day);
-  return hours + (calendar_days - static_cast<double>(whole)) * hours_on_day(*this, whole);
+  long long day = 0;
+  for (; day < std::min(whole, kDailyDays); ++day) hours += walk.hours_on(day);
+  while (day < whole) {
+    const long long end = walk.run_end(day);
+    if (end == day) {
+      day = std::min(walk.stop_end(), whole);
+      continue;
+    }
+    const long long to = std::min(end, whole);
+    hours += static_cast<double>(to - day) * walk.hours_per_day();
+    day = to;
+  }
+  return hours + (calendar_days - static_cast<double>(whole)) * walk.hours_on(whole);
 }
 
 CivilDate Calendar::date_after(double operating_hours) const {

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "geometry/errors.h"
+#include "geometry/input_file.h"
 #include "geometry/measured_profile.h"
 #include "geometry/mill.h"
 
@@ -83,6 +84,7 @@ MeasuredHistory load_measured_history(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path, fmt::format("measured profile file {} does not exist", path));
   if (fs::is_directory(path, ec)) throw InputError(path, fmt::format("measured profile file {} is a directory", path));
+  require_regular_input_file(path, "measured profile file");
   std::ifstream f(path);
   if (!f) throw InputError(path, fmt::format("measured profile file {} cannot be read", path));
   std::stringstream ss;

@@ -104,16 +104,19 @@ Trapezoid trapezoid(double R, const LifterDesign& d, double lead_sign) {
 void validate_lifter_design(const Mill& mill, int segments, const LifterDesign& d, double h, const char* prefix) {
   const double R = mill.shell_radius_m();
   auto key = [&](const char* name) { return std::string(prefix) + name; };
+  // the key as the user wrote it: "low_lifter_height_m" for the low lifter of a hi-lo liner
+  const std::string pfx(prefix);
+  const std::string written = pfx.rfind("liner.", 0) == 0 ? pfx.substr(6) : pfx;
+  auto nm = [&](const char* name) { return written + name; };
   if (!(d.plate_thickness_m > 0 && d.plate_thickness_m <= 0.25 * R))
     throw InputError(key("plate_thickness_m"),
-                     fmt::format("plate_thickness_m = {} m: must be > 0 and at most a quarter of the shell radius "
-                                 "({:.4g} m)",
-                                 d.plate_thickness_m, 0.25 * R));
+                     fmt::format("{} = {} m: must be > 0 and at most a quarter of the shell radius ({:.4g} m)",
+                                 nm("plate_thickness_m"), d.plate_thickness_m, 0.25 * R));
   if (!(d.lifter_height_m >= 0 && d.lifter_height_m <= 0.25 * R))
     throw InputError(key("lifter_height_m"),
-                     fmt::format("lifter_height_m = {} m: a lifter taller than a quarter of the shell radius "
+                     fmt::format("{} = {} m: a lifter taller than a quarter of the shell radius "
                                  "({:.4g} m) is not a mill liner; allowed 0 to {:.4g} m",
-                                 d.lifter_height_m, 0.25 * R, 0.25 * R));
+                                 nm("lifter_height_m"), d.lifter_height_m, 0.25 * R, 0.25 * R));
   for (auto [name, a] : {std::pair<const char*, double>{"face_angle_leading_deg", d.face_angle_leading_deg},
                          {"face_angle_trailing_deg", d.face_angle_trailing_deg}})
     if (!(a >= 0 && a < 80))
@@ -127,9 +130,9 @@ void validate_lifter_design(const Mill& mill, int segments, const LifterDesign& 
   const double chord_at_top = 2 * xt * std::sin(0.5 * seg);
   if (!(d.top_width_m > 0 && d.top_width_m < chord_at_top))
     throw InputError(key("lifter_top_width_m"),
-                     fmt::format("lifter_top_width_m = {} m: must be > 0 and narrower than the segment at the lifter "
+                     fmt::format("{} = {} m: must be > 0 and narrower than the segment at the lifter "
                                  "top ({:.4g} m for {} segments)",
-                                 d.top_width_m, chord_at_top, segments));
+                                 nm("lifter_top_width_m"), d.top_width_m, chord_at_top, segments));
   const double feature = std::min({d.lifter_height_m, d.top_width_m});
   if (h > 0.25 * feature)
     throw InputError("liner.element_size_m",
@@ -206,8 +209,10 @@ std::vector<Eigen::Vector2d> segment_profile(const Mill& mill, const LinerDesign
 }
 
 LinerSurface build_liner_surface(const Mill& mill, const LinerDesign& design) {
-  if (design.segments < 1)
-    throw InputError("liner.segments", fmt::format("segments = {}: must be at least 1", design.segments));
+  if (design.segments < kMinSegments)
+    throw InputError("liner.segments",
+                     fmt::format("segments = {}: must be at least {} (one row's segment is the whole ring)",
+                                 design.segments, kMinSegments));
   if (design.hi_lo && design.segments % 2 != 0)
     throw InputError("liner.segments",
                      fmt::format("segments = {}: a hi-lo pattern needs an even number of segments", design.segments));

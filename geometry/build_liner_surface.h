@@ -7,6 +7,17 @@
 
 namespace linerlife {
 
+/// The fewest lifter rows: with one, the segment is the whole ring, whose
+/// chord at the lifter top is zero (no lifter fits) and whose one cell the
+/// forecast's remesh cannot wear (a plain plate of one row fails there).
+constexpr int kMinSegments = 2;
+
+/// [m] The finest surface element: a quarter of the finest run of the
+/// element-size study (docs/geometry.md), 2.5 mm, which differs from 5 mm by
+/// under 0.2 %. A 15 m mill has 47,000 nodes at 1 mm; 1e-9 m asked for
+/// 3e10 and ended in bad_alloc.
+constexpr double kMinElementSizeM = 0.001;
+
 /// Builds the whole ring of liners for `mill` from `design`, with surface
 /// elements no longer than design.element_size_m. The leading face of a
 /// parametric lifter faces the mill's direction of rotation; a measured

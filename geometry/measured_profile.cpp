@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "geometry/errors.h"
+#include "geometry/input_file.h"
 #include "geometry/mill.h"
 
 namespace linerlife {
@@ -101,6 +102,7 @@ MeasuredProfile load_profile_csv(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path, fmt::format("profile file {} does not exist", path));
   if (fs::is_directory(path, ec)) throw InputError(path, fmt::format("profile file {} is a directory", path));
+  require_regular_input_file(path, "profile file");
   std::ifstream f(path);
   if (!f) throw InputError(path, fmt::format("profile file {} cannot be read", path));
   std::stringstream ss;

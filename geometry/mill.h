@@ -26,6 +26,12 @@ struct Mill {
   double sense() const { return rotation == Rotation::Ccw ? 1.0 : -1.0; }
 };
 
+/// [-] The slowest mill speed accepted, as a fraction of critical: below it
+/// the charge only creeps up the shell and slides back (a tumbling mill runs
+/// at 0.6-0.85; the charge models' time steps are per revolution, so a run
+/// at 1e-9 rpm never ends).
+constexpr double kMinSpeedFractionCritical = 0.05;
+
 /// Critical speed [rpm] of a mill with inside diameter d_m [m]:
 /// N_c = (60 / 2 pi) sqrt(2 g / D) = 42.3 / sqrt(D) (Morrell 1996; reference/charge-models.md §1).
 inline double critical_speed_rpm(double d_m) {

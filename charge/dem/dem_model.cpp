@@ -40,6 +40,8 @@ void validate_spec(const DemSpec& s) {
   check_range("rolling_resistance", s.rolling_resistance, 0, 0.5, false, "rolling resistance coefficient");
   if (s.collision_time_s > 0 && s.stiffness > 0)
     refuse("stiffness", "give collision_time_s or stiffness, not both");
+  if (s.collision_time_s > 0) check_range("collision_time_s", s.collision_time_s, kDemMinCollisionTimeS, 1, false, "s");
+  if (s.stiffness > 0) check_range("stiffness", s.stiffness, kDemMinStiffness, 1e15, false, "N/m per m");
   check_range("overlap_fraction", s.overlap_fraction, 0, 0.2, true, "overlap over diameter");
   if (!(s.steps_per_collision >= kDemMinStepsPerCollision))
     refuse("steps_per_collision",
@@ -55,10 +57,39 @@ void validate_spec(const DemSpec& s) {
                                               s.rock_diameter_min_m, s.rock_diameter_max_m));
 }
 
+/// The key a charge that does not fit in the mill is refused under, and why:
+/// the rows of place() are as tall as the largest disc, so a rock much larger
+/// than the balls (rock_diameter_max_m) or coarse discs (coarse_grain) stack
+/// few rows; otherwise the charge itself (filling) is too large.
+struct PlacementBlame {
+  std::string key;    // "dem.rock_diameter_max_m", "dem.coarse_grain" or "charge.filling"
+  std::string value;  // "rock_diameter_max_m = 0.9 m": the key and its value, first in the message
+  std::string why;    // after the count of discs: what to change
+};
+
+PlacementBlame placement_blame(const ChargeSpec& ch, const DemSpec& spec, double dmax) {
+  const double s = spec.coarse_grain;
+  const double d_ball = ch.ball_filling > 0 ? ch.ball_diameter_m : 0.0;
+  const bool rocks = ch.filling > ch.ball_filling;
+  if (rocks && spec.rock_diameter_max_m > d_ball)
+    return {"dem.rock_diameter_max_m", fmt::format("rock_diameter_max_m = {} m", spec.rock_diameter_max_m),
+            fmt::format("they are placed in rows as tall as the largest disc, this rock ({:.4g} m{}); lower "
+                        "rock_diameter_max_m (the balls are {} m){}",
+                        dmax, s > 1 ? fmt::format(" at coarse_grain = {}", s) : "", ch.ball_diameter_m,
+                        s > 1 ? " or coarse_grain" : "")};
+  if (s > 1)
+    return {"dem.coarse_grain", fmt::format("coarse_grain = {}", s),
+            fmt::format("they are placed in rows as tall as the largest disc ({:.4g} m); lower coarse_grain", dmax)};
+  return {"charge.filling", fmt::format("filling = {}", ch.filling),
+          fmt::format("they are placed in rows as tall as the largest disc ({:.4g} m); lower filling", dmax)};
+}
+
 /// Rows of discs from the bottom of the mill up (loose, shuffled sizes), each
 /// row a horizontal chord of the crest circle: deterministic and cheap; the
-/// bed settles during the settling revolutions.
-DemParticles place(const ParticleSet& ps, double r_place, double omega_signed, unsigned long long seed) {
+/// bed settles during the settling revolutions. Refused under `blame` when
+/// the discs do not fit.
+DemParticles place(const ParticleSet& ps, double r_place, double omega_signed, unsigned long long seed,
+                   const PlacementBlame& blame) {
   DemParticles p;
   const int n = ps.size();
   const double dmax = 2 * *std::max_element(ps.radius_m.begin(), ps.radius_m.end());
@@ -69,10 +100,9 @@ DemParticles place(const ParticleSet& ps, double r_place, double omega_signed, u
     const double yy = std::max(std::abs(y - 0.5 * pitch), std::abs(y + 0.5 * pitch));
     if (yy >= r_place && y < 0) continue;  // the bottom row is a chord too short to hold a disc
     if (yy >= r_place)
-      throw InputError("dem.coarse_grain",
-                       fmt::format("[dem] the {} discs of this charge do not fit in the mill (placed {}): the charge "
-                                   "is too large for the mill or the discs too coarse; lower coarse_grain or filling",
-                                   n, idx));
+      throw InputError(blame.key, fmt::format("{}: [dem] the {} discs of this charge do not fit in the mill (placed "
+                                              "{}): {}",
+                                              blame.value, n, idx, blame.why));
     const double half = std::sqrt(r_place * r_place - yy * yy);
     double x = -half;
     while (idx < n) {
@@ -190,7 +220,8 @@ DemSetup make_dem_setup(const ChargeInput& in) {
   set.check_interval = 50;
 
   const double r_place = s.r_crest - 0.02 * dmax;
-  s.initial = place(ps, r_place, set.wall_omega, static_cast<unsigned long long>(spec.seed));
+  s.initial = place(ps, r_place, set.wall_omega, static_cast<unsigned long long>(spec.seed),
+                    placement_blame(ch, spec, dmax));
   return s;
 }
 

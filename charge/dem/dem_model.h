@@ -19,6 +19,19 @@ namespace linerlife {
 /// test 1 blow up at 2 steps a contact and degrade at 2.5; 5 keeps a factor 2.
 constexpr double kDemMinStepsPerCollision = 5;
 
+/// [s] The shortest collision_time_s accepted. The default contacts last about
+/// 1 ms (0.97 ms in the Qiu slice, 2.4 ms in pilot test 1; docs/models/dem.md
+/// §2) and a real steel ball on steel about 0.1-0.3 ms; at 10 us a run already
+/// takes some 100 times the default's steps, and 1e-12 s never ends.
+constexpr double kDemMinCollisionTimeS = 1e-5;
+
+/// [N/m per m] The softest `stiffness` accepted (linear k_n, or hertz k_h in
+/// N/m^1.5 per m). The default contacts of the Qiu slice are 1e7-4e8 N/m per m
+/// stiff; pilot test 1 runs at 1e5 and its discs pass through the liner at
+/// 1e3 (exit 3), as the Qiu slice's do up to 1e6. Below 1e4 no mill's bed can
+/// hold its discs apart, and 1e-300 made contacts last 1e150 s.
+constexpr double kDemMinStiffness = 1e4;
+
 /// What a DEM run derived and measured (the command's --json reads
 /// RunStats; benchmarks and docs read this).
 struct DemRunInfo {

@@ -45,6 +45,33 @@ bool is_iso_date(const std::string& s) { return std::regex_match(s, std::regex("
 
 }  // namespace
 
+TEST_CASE("a forecast horizon beyond 1,000,000 calendar days gets its own date", "[app][cli][forecast]") {
+  // a review: the calendar stopped at 1,000,000 days without saying so (no
+  // wear, 1e6 h at availability 0.01: 4764-11-27 for 4,166,667 days); at 0.02
+  // the horizon is 2,083,333 days away, in 7730
+  const fs::path dir = temp_dir("fc_horizon");
+  std::string t = fast_qiu("max_operating_hours = 1e6\n");
+  t = std::regex_replace(t, std::regex("availability = 0.92\n"), "availability = 0.02\n");
+  t = std::regex_replace(t, std::regex("\\[wear\\]\n"), "[wear]\nlaws = \"none\"\n");
+  write_file(dir / "m.toml", t);
+  RunResult r = run_linerlife("forecast " + (dir / "m.toml").string() + " --json", 120);
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const JsonValue j = parse_json(r.out);
+  CHECK(j["criterion"].str() == "horizon");
+  CHECK(j["operating_hours"].num() == Approx(1e6));
+  CHECK(j["calendar_days"].num() == Approx(1e6 / 0.48).epsilon(1e-9));
+  CHECK(j["relining_date"].str() == "7730-12-22");
+  // at 0.01 the horizon's date would pass 9999-12-31: refused before any work
+  write_file(dir / "m.toml", std::regex_replace(t, std::regex("availability = 0.02\n"), "availability = 0.01\n"));
+  r = run_linerlife("forecast " + (dir / "m.toml").string() + " --json", 30);
+  CHECK(r.code == 2);
+  CHECK(r.out.empty());
+  CHECK_THAT(r.err, Catch::Contains("max_operating_hours = 1000000 h ends on +13434-12-12"));
+  CHECK_THAT(r.err, Catch::Contains("cannot be written as a date"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("forecast --json gives the relining date, the criterion and the history along the life",
           "[app][cli][forecast]") {
   const fs::path dir = temp_dir("fc_json");

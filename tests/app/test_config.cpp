@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "app/config.h"
+#include "app/config_edit.h"
 #include "forecast/calendar.h"
 #include "geometry/errors.h"
 
@@ -150,6 +151,44 @@ TEST_CASE("physically impossible mills are refused naming the key and the line",
   refused(edited("liner", "low_lifter_height_m", "0.1"), {"only with pattern"});
 }
 
+TEST_CASE("the low lifter of a hi-lo liner is refused under its own key", "[app][config][input]") {
+  // a review: low_lifter_height_m = 1.5 was reported as "lifter_height_m = 1.5 m" (the line was right)
+  const std::string t = edited_text(
+      edited_text(edited("liner", "pattern", "\"hi-lo\""), "liner", "low_lifter_height_m", "1.5"), "liner",
+      "low_lifter_top_width_m", "0.1");
+  refused(t, {"mill.toml:" + std::to_string(line_of(t, "low_lifter_height_m = 1.5")) +
+                  ": low_lifter_height_m = 1.5 m: a lifter taller than a quarter of the shell radius"});
+  const std::string w = edited_text(
+      edited_text(edited("liner", "pattern", "\"hi-lo\""), "liner", "low_lifter_height_m", "0.15"), "liner",
+      "low_lifter_top_width_m", "0.6");
+  refused(w, {"mill.toml:" + std::to_string(line_of(w, "low_lifter_top_width_m = 0.6")) +
+                  ": low_lifter_top_width_m = 0.6 m: must be > 0 and narrower than the segment"});
+}
+
+TEST_CASE("the declared ranges are the ones that work", "[app][config][input]") {
+  // segments = 1 was inside 1..400 but always refused by the lifter's top
+  // width (a segment of the whole ring has no chord); 2 rows build
+  refused(edited("liner", "segments", "1"), {"segments = 1: out of range; allowed 2 <= value <= 400"});
+  CHECK(load_config_text(edited("liner", "segments", "2"), "mill.toml", ".").liner.segments == 2);
+  // a mill below 0.05 of critical does not tumble; its charge runs never ended
+  refused(edited("mill", "speed_rpm", "1e-9"),
+          {"speed_rpm = 1e-09 is only", "allowed 0.6701 <= speed_rpm < 13.402"});
+  refused(edited("mill", "speed_rpm", "0.67"), {"speed_rpm = 0.67 is only 0.05 of the critical speed"});
+  CHECK_NOTHROW(load_config_text(edited("mill", "speed_rpm", "0.671"), "mill.toml", "."));
+  refused(edited_text(removed("speed_rpm"), "mill", "speed_fraction_critical", "0.04"),
+          {"speed_fraction_critical = 0.04: out of range; allowed 0.05 <= value < 1"});
+  CHECK_NOTHROW(load_config_text(edited_text(removed("speed_rpm"), "mill", "speed_fraction_critical", "0.05"),
+                                 "mill.toml", "."));
+  // elements finer than 1 mm (1e-9 ended in bad_alloc)
+  refused(edited("liner", "element_size_m", "1e-9"), {"element_size_m = 1e-09: out of range", "0.001 <= value"});
+  // DEM contacts: 1e-12 s hung, stiffness 1e-300 failed as a simulation
+  const std::string dem = default_config_text() + "\n[dem]\n";
+  refused(dem + "collision_time_s = 1e-12\n", {"collision_time_s = 1e-12: out of range", "1e-05 <= value <= 1 s"});
+  refused(dem + "stiffness = 1e-300\n", {"stiffness = 1e-300: out of range", "10000 <= value"});
+  CHECK_NOTHROW(load_config_text(dem + "collision_time_s = 1e-5\n", "mill.toml", "."));
+  CHECK_NOTHROW(load_config_text(dem + "stiffness = 1e4\n", "mill.toml", "."));
+}
+
 TEST_CASE("media between asymmetric lifters: the gap is one lifter's side ahead and the next one's behind",
           "[app][config][input]") {
   // The spacing at the plate reported by the refusal (ball_diameter_m = 0.3),
@@ -215,11 +254,11 @@ TEST_CASE("every configuration key is documented", "[app][config][docs]") {
 
 TEST_CASE("forecast dates, availability and shutdowns load and are checked", "[app][config][input]") {
   std::string t = edited("forecast", "start_date", "2028-02-29");
-  t = edited_text(t, "forecast", "shutdowns", "[{ start = 2028-06-01, days = 7 }, { start = 2028-12-24, days = 3.5 }]");
+  t = edited_text(t, "forecast", "shutdowns", "[{ start = 2028-06-01, days = 7 }, { start = 2028-12-24, days = 3.0 }]");
   const Config c = load_config_text(t, "f.toml", ".");
   CHECK(iso_date(c.forecast.calendar.start) == "2028-02-29");
   REQUIRE(c.forecast.calendar.shutdowns.size() == 2);
-  CHECK(c.forecast.calendar.shutdowns[1].days == 3.5);
+  CHECK(c.forecast.calendar.shutdowns[1].days == 3);
   // and round-trips through the printed file
   const Config d = load_config_text(config_to_toml(c, true), "g.toml", ".");
   CHECK(config_to_toml(d, false) == config_to_toml(c, false));
@@ -229,8 +268,87 @@ TEST_CASE("forecast dates, availability and shutdowns load and are checked", "[a
   refused(edited("forecast", "start_date", "2027-13-01"), {"TOML syntax error"});
   refused(edited("forecast", "availability", "0.0"), {"availability = 0:", "0 < value <= 1"});
   refused(edited("forecast", "availability", "1.2"), {"availability = 1.2", "out of range"});
-  refused(edited("forecast", "shutdowns", "[{ start = 2027-06-01 }]"), {"shutdowns", "expected a list"});
+  refused(edited("forecast", "shutdowns", "{ start = 2027-06-01, days = 7 }"), {"shutdowns", "expected a list"});
   refused(edited("forecast", "shutdowns", "[{ start = 2027-06-01, days = -2 }]"), {"shutdowns", "0 < days"});
   refused(edited("forecast", "method", "\"rk4\""), {"method = \"rk4\"", "\"ode\", \"amplify\", \"euler\""});
   refused(edited("forecast", "rtol", "0.0"), {"rtol = 0:", "out of range"});
+}
+
+TEST_CASE("a varied string key takes its value with or without quotes", "[app][config][input]") {
+  // compare --vary mill.rotation=ccw,cw was a TOML syntax error blamed on the configuration
+  const Config c = load_default_config();
+  CHECK(c.mill.rotation == Rotation::Ccw);
+  CHECK(config_with(c, "mill.rotation", "cw", "--vary").mill.rotation == Rotation::Cw);
+  CHECK(config_with(c, "mill.rotation", "\"cw\"", "--vary").mill.rotation == Rotation::Cw);
+  CHECK(config_with(c, "liner.pattern", "uniform", "--vary").pattern == "uniform");
+  CHECK_THROWS_WITH(config_with(c, "mill.rotation", "left", "--vary"),
+                    Catch::Contains("--vary mill.rotation=left: [mill] rotation = \"left\": allowed one of"));
+  // a value that is no TOML at all is the option's fault, with what is allowed
+  CHECK_THROWS_WITH(config_with(c, "mill.diameter_m", "big", "--vary"),
+                    Catch::Contains("--vary mill.diameter_m=big: big is not a value for [mill] diameter_m; allowed 0.1 < "
+                                    "value <= 15 m"));
+}
+
+TEST_CASE("a shutdown entry that is wrong is named with what is wrong in it", "[app][config][input]") {
+  // a review: an extra field, a missing days and a quoted start all gave the same "expected a list"
+  auto shut = [](const std::string& list) { return edited("forecast", "shutdowns", list); };
+  const std::string ok = "{ start = 2027-03-01, days = 2 }, ";
+  const std::string t = shut("[" + ok + "{ start = 2027-06-01, days = 7, reason = \"relining\" }]");
+  refused(t, {"mill.toml:" + std::to_string(line_of(t, "shutdowns = ")) + ": [forecast] shutdowns: shutdown 2 of 2: "
+              "unknown field \"reason\""});
+  refused(shut("[{ start = 2027-06-01 }]"), {"shutdown 1 of 1: missing days"});
+  refused(shut("[{ days = 7 }]"), {"shutdown 1 of 1: missing start"});
+  refused(shut("[" + ok + "{ start = \"2027-06-01\", days = 7 }]"),
+          {"shutdown 2 of 2: start = \"2027-06-01\" is not a date (write it unquoted"});
+  refused(shut("[{ start = 2027-06-01, days = \"a week\" }]"), {"shutdown 1 of 1: days = \"a week\" is not a number"});
+  refused(shut("[7]"), {"shutdown 1 of 1: 7 is not a table"});
+  // whole days, as the key says (7.5 was taken as 8 stopped days)
+  refused(shut("[{ start = 2027-06-01, days = 7.5 }]"), {"shutdown 1 of 1: days = 7.5: the mill stops for whole calendar days"});
+  CHECK(load_config_text(shut("[{ start = 2027-06-01, days = 7.0 }]"), "mill.toml", ".").forecast.calendar.shutdowns[0].days == 7);
+  // none before the start of the calendar
+  refused(shut("[" + ok + "{ start = 2026-12-24, days = 3 }]"),
+          {"shutdown 2 of 2 starts on 2026-12-24, before start_date = 2027-01-01"});
+  CHECK_NOTHROW(load_config_text(shut("[{ start = 2027-01-01, days = 3 }]"), "mill.toml", "."));
+  // year 0 is a TOML date but no calendar's (start_date became 2000-01-01)
+  {
+    const std::string z = edited("forecast", "start_date", "0000-01-01");
+    refused(z, {"mill.toml:" + std::to_string(line_of(z, "start_date = 0000-01-01")) +
+                ": [forecast] start_date = 0000-01-01: allowed a date from 0001-01-01 to 9999-12-31"});
+  }
+  refused(shut("[{ start = 0000-06-01, days = 3 }]"), {"shutdown 1 of 1: start = 0000-06-01: allowed a date from 0001-01-01"});
+}
+
+TEST_CASE("a forecast horizon whose date would pass 9999-12-31 is refused", "[app][config][input]") {
+  // 1e6 h at availability 0.01 ends in the year 13434, which no ISO date holds
+  std::string t = edited("forecast", "availability", "0.01");
+  t = edited_text(t, "forecast", "max_operating_hours", "1e6");
+  refused(t, {"mill.toml:" + std::to_string(line_of(t, "max_operating_hours = 1e6")) +
+                  ": max_operating_hours = 1000000 h ends on +13434-12-12, at availability = 0.01 from start_date = "
+                  "2027-01-01: a relining date after 9999-12-31 cannot be written as a date; allowed "
+                  "max_operating_hours <= 698898 h here"});
+  CHECK_NOTHROW(load_config_text(edited_text(t, "forecast", "max_operating_hours", "698898"), "mill.toml", "."));
+  // a start late in the year 9999 leaves room for no default horizon
+  refused(edited("forecast", "start_date", "9999-01-01"), {"max_operating_hours = 50000 h ends on +10005-"});
+}
+
+TEST_CASE("a low lifter taller than the high one, and laws that say two things, are refused", "[app][config][input]") {
+  // hi-lo: the low lifters are the lower ones
+  const std::string t = edited_text(
+      edited_text(edited("liner", "pattern", "\"hi-lo\""), "liner", "low_lifter_height_m", "0.3"), "liner",
+      "low_lifter_top_width_m", "0.1");
+  refused(t, {"mill.toml:" + std::to_string(line_of(t, "low_lifter_height_m = 0.3")) +
+                  ": low_lifter_height_m = 0.3 m is taller than lifter_height_m = 0.25 m",
+              "allowed 0 <= low_lifter_height_m <= 0.25 m"});
+  CHECK_NOTHROW(load_config_text(edited_text(t, "liner", "low_lifter_height_m", "0.25"), "mill.toml", "."));
+  // "none" beside laws was dropped; an empty list meant no wear
+  {
+    const std::string w = edited("wear", "laws", "\"none, abrasion/archard\"");
+    refused(w, {"mill.toml:" + std::to_string(line_of(w, "laws = \"none")) +
+                    ": laws = \"none, abrasion/archard\": \"none\" (no wear) must stand alone"});
+  }
+  refused(edited("wear", "laws", "\"\""), {"laws = \"\": no wear law named", "\"none\" for no wear"});
+  refused(edited("wear", "laws", "\" , \""), {"no wear law named"});
+  CHECK(load_config_text(edited("wear", "laws", "\"none\""), "mill.toml", ".").wear.laws.empty());
+  CHECK(load_config_text(edited("wear", "laws", "\"abrasion/archard\""), "mill.toml", ".").wear.laws ==
+        std::vector<std::string>{"abrasion/archard"});
 }

@@ -35,3 +35,29 @@ TEST_CASE("availability and shutdowns stretch operating hours over the calendar"
   CHECK(c.operating_hours_after(17) == Approx(21.6 * 10));
   CHECK(iso_date(c.date_after(21.6 * 10)) == "2027-01-17");
 }
+
+TEST_CASE("a life of more than 1,000,000 calendar days is counted to its end", "[forecast][calendar]") {
+  // a review: 1e6 h at availability 0.01 stopped at the old cap of 1,000,000
+  // days (a relining date of 4764-11-27); it is 4,166,667 days
+  Calendar c;
+  c.start = {2027, 1, 1};
+  c.availability = 0.01;
+  CHECK(c.calendar_days_for(1e6) == Approx(1e6 / 0.24).epsilon(1e-9));
+  // ISO 8601's expanded year past 9999 (the configuration refuses such a horizon)
+  CHECK(iso_date(c.date_after(1e6)) == "+13434-12-12");
+  c.availability = 0.02;
+  CHECK(c.calendar_days_for(1e6) == Approx(1e6 / 0.48).epsilon(1e-9));
+  CHECK(iso_date(c.date_after(1e6)) == "7730-12-22");
+  // a shutdown beyond the day-by-day stretch (100 years) still stops the mill
+  c.availability = 1.0;
+  c.shutdowns.push_back({civil_from_days(days_from_civil(c.start) + 50000), 10});
+  CHECK(c.calendar_days_for(24.0 * 49000) == Approx(49000));
+  CHECK(c.calendar_days_for(24.0 * 60000) == Approx(60010));
+  CHECK(c.operating_hours_after(60010) == Approx(24.0 * 60000));
+  CHECK(c.operating_hours_after(50005) == Approx(24.0 * 50000));
+  // and the two functions invert each other across the stretch's end
+  c.availability = 0.7;
+  c.shutdowns.push_back({{2031, 3, 1}, 14});
+  for (const double h : {100.0, 5e4, 6.1e5, 6.2e5, 1e6, 3e6})
+    CHECK(c.operating_hours_after(c.calendar_days_for(h)) == Approx(h).epsilon(1e-9));
+}
