@@ -10,10 +10,12 @@
 
 #include <fmt/format.h>
 
+#include "app/commands.h"
 #include "charge/dem/particle_set.h"
 #include "forecast/charge_wear_rate.h"
 #include "geometry/errors.h"
 #include "geometry/build_liner_surface.h"
+#include "geometry/metrics.h"
 #include "wear/recession.h"
 
 namespace linerlife {
@@ -94,6 +96,63 @@ std::vector<std::string> case_warning_lines(const std::vector<std::string>& labe
   return lines;
 }
 
+namespace {
+
+/// The new liner against the relining criteria, as the forecast gauges it
+/// (forecast/forecast.cpp, Criteria: segment 0's lifter, the thinnest point
+/// over one period of the pattern; a liner without a lifter has no height or
+/// face criterion). The forecast refuses a start that meets one too, but only
+/// when it runs: compare set every case up first and still ran the cases
+/// before a refused one (a review: --vary forecast.min_lifter_height_m=0.1,0.3
+/// forecast the first case for 14 s before refusing the second).
+/// Returns the warning for criteria given that cannot apply ("" if none).
+std::string check_start_criteria(const Config& c, const LinerSurface& ring) {
+  const ForecastSpec& f = c.forecast;
+  const int period = pattern_period(ring);
+  const SegmentMetrics lifter = segment_metrics(ring, 0, c.mill.rotation, c.liner.density_kg_m3);
+  double thinnest = lifter.min_thickness_m;
+  for (int k = 1; k < period; ++k)
+    thinnest = std::min(thinnest, segment_metrics(ring, k, c.mill.rotation, c.liner.density_kg_m3).min_thickness_m);
+  const bool has = lifter.has_lifter;
+  const double face = lifter.face_angle_leading_deg;
+  constexpr double kWornThroughM = 2e-4;  // forecast.cpp's: the remesh holds nodes 1e-4 m off the shell
+  const std::array<std::pair<const char*, bool>, 4> met = {{
+      {"min_lifter_height", has && lifter.lifter_height_m <= f.min_lifter_height_m},
+      {"min_plate_thickness", thinnest <= f.min_plate_thickness_m},
+      {"max_face_angle_leading", has && !std::isnan(face) && face >= f.max_face_angle_leading_deg},
+      {"worn_through", thinnest <= kWornThroughM},
+  }};
+  const std::array<const char*, 4> keys = {"forecast.min_lifter_height_m", "forecast.min_plate_thickness_m",
+                                           "forecast.max_face_angle_leading_deg", "forecast.min_plate_thickness_m"};
+  for (size_t i = 0; i < met.size(); ++i)
+    if (met[i].second)
+      throw located(c, InputError(keys[i], fmt::format("the liner already meets the relining criterion {} at the start "
+                                                       "(lifter height {:.4f} m, thinnest point {:.4f} m, leading face "
+                                                       "{:.2f} deg): nothing to forecast; check the [forecast] criteria "
+                                                       "against the liner",
+                                                       met[i].first, lifter.lifter_height_m, thinnest, face)));
+  // A liner without a lifter (a plain plate, or a measured profile with none)
+  // has no lifter to wear down: a height or face criterion given for it is
+  // ignored, which is said, as a warning, for the keys the file or --vary set.
+  if (has) return "";
+  auto given = [&](const char* key) { return c.key_lines.count(key) > 0 || c.key_origin.count(key) > 0; };
+  std::string ignored;
+  if (given("forecast.min_lifter_height_m") && f.min_lifter_height_m > 0)
+    ignored = fmt::format("min_lifter_height_m = {} m", f.min_lifter_height_m);
+  if (given("forecast.max_face_angle_leading_deg"))
+    ignored += (ignored.empty() ? "" : " and ") + fmt::format("max_face_angle_leading_deg = {} deg",
+                                                              f.max_face_angle_leading_deg);
+  if (ignored.empty()) return "";
+  const bool both = ignored.find(" and ") != std::string::npos;
+  return fmt::format("the liner has no lifter ({}lifter height {:.4f} m at the start): [forecast] {} {} not apply; its "
+                     "life ends on min_plate_thickness_m = {} m or the horizon (leave {} out of [forecast] for a liner "
+                     "without lifters)",
+                     c.liner.measured ? "" : "a plain plate, ", lifter.lifter_height_m, ignored, both ? "do" : "does",
+                     f.min_plate_thickness_m, both ? "them" : "it");
+}
+
+}  // namespace
+
 ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fitted, bool print_warnings) {
   // A coarse-grained DEM needs its largest disc under the lifter
   // (docs/models/dem.md §3); the forecast wears the lifter down to
@@ -113,10 +172,11 @@ ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fi
                                    std::max(1.0, std::floor(h_end / dmax * 1000) / 1000)));
   }
   ForecastSetup s;
+  s.surface = std::make_shared<LinerSurface>(build_liner_surface(c.mill, c.liner));
   s.warnings = wear_load_warnings(c, fitted);
+  if (const std::string w = check_start_criteria(c, *s.surface); !w.empty()) s.warnings.push_back(w);
   if (print_warnings)
     for (const std::string& m : s.warnings) std::cerr << "linerlife: warning: " << m << "\n";
-  s.surface = std::make_shared<LinerSurface>(build_liner_surface(c.mill, c.liner));
   s.input.initial = s.surface.get();
   s.input.rotation = c.mill.rotation;
   s.input.density_kg_m3 = c.liner.density_kg_m3;

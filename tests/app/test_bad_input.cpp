@@ -419,6 +419,26 @@ TEST_CASE("a forecast refused at setup leaves no output folder", "[app][cli][inp
   fs::remove_all(dir);
 }
 
+// compare sets every case up before it runs any, but the start state was
+// checked against the criteria only when a case's forecast began: a review's
+// --vary forecast.min_lifter_height_m=0.1,0.3 forecast the first case for 14 s
+// before refusing the second. The check is now part of the set-up.
+TEST_CASE("compare refuses a case whose liner already meets a criterion before any case runs", "[app][cli][input]") {
+  const fs::path dir = temp_dir("compare_start");
+  const fs::path out = dir / "out";
+  write_file(dir / "m.toml", defaults_with("min_lifter_height_m = ", "min_lifter_height_m = 0.075"));
+  const RunResult r = run_linerlife("compare " + (dir / "m.toml").string() +
+                                        " --vary forecast.min_lifter_height_m=0.1,0.3 --out " + out.string(),
+                                    60);
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("--vary forecast.min_lifter_height_m=0.3: min_lifter_height_m = 0.3: the liner "
+                                    "already meets the relining criterion min_lifter_height at the start"));
+  CHECK_THAT(r.err, !Catch::Contains("forecast 1/2"));  // no case started
+  CHECK_FALSE(fs::exists(out));
+  fs::remove_all(dir);
+}
+
 // A coarse-grained DEM needs its largest disc under the lifter; the forecast
 // wears the lifter to min_lifter_height_m, so it is refused at setup with the
 // largest coarse_grain that forecast allows (the DEM would otherwise refuse a

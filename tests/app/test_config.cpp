@@ -6,6 +6,7 @@
 
 #include "app/config.h"
 #include "app/config_edit.h"
+#include "app/forecast_setup.h"
 #include "forecast/calendar.h"
 #include "geometry/errors.h"
 
@@ -351,4 +352,41 @@ TEST_CASE("a low lifter taller than the high one, and laws that say two things, 
   CHECK(load_config_text(edited("wear", "laws", "\"none\""), "mill.toml", ".").wear.laws.empty());
   CHECK(load_config_text(edited("wear", "laws", "\"abrasion/archard\""), "mill.toml", ".").wear.laws ==
         std::vector<std::string>{"abrasion/archard"});
+}
+
+TEST_CASE("a forecast's start is checked against its criteria at set-up, and criteria a plain plate ignores are said",
+          "[app][config][input]") {
+  // set-up refuses what the forecast's first step would (compare sets every
+  // case up before it runs any)
+  const std::string high = edited("forecast", "min_lifter_height_m", "0.3");
+  const std::string file_line = "mill.toml:" + std::to_string(line_of(high, "min_lifter_height_m = 0.3")) + ": ";
+  try {
+    make_forecast_setup(load_config_text(high, "mill.toml", "."), {false, false, false}, false);
+    FAIL("set up");
+  } catch (const InputError& e) {
+    CHECK_THAT(e.what(), Catch::StartsWith(file_line + "min_lifter_height_m = 0.3: the liner already meets the relining "
+                                           "criterion min_lifter_height at the start (lifter height 0.2500 m, thinnest "
+                                           "point 0.0750 m, leading face 20.00 deg)"));
+  }
+  CHECK_THROWS_WITH(make_forecast_setup(load_config_text(edited("forecast", "min_plate_thickness_m", "0.08"), "mill.toml", "."),
+                                        {false, false, false}, false),
+                    Catch::Contains("criterion min_plate_thickness at the start"));
+  CHECK_THROWS_WITH(make_forecast_setup(load_config_text(edited("forecast", "max_face_angle_leading_deg", "15.0"), "mill.toml",
+                                                         "."),
+                                        {false, false, false}, false),
+                    Catch::Contains("criterion max_face_angle_leading at the start"));
+  // the bundled liner sets up with no warning
+  CHECK(make_forecast_setup(load_default_config(), {false, false, false}, false).warnings.empty());
+  // a plain plate: the height and face criteria the file gives do not apply
+  const std::string plate = edited("liner", "lifter_height_m", "0.0");
+  const ForecastSetup s = make_forecast_setup(load_config_text(plate, "mill.toml", "."), {false, false, false}, false);
+  REQUIRE(s.warnings.size() == 1);
+  CHECK_THAT(s.warnings[0], Catch::Contains("the liner has no lifter (a plain plate, lifter height 0.0000 m at the "
+                                            "start): [forecast] min_lifter_height_m = 0.075 m and "
+                                            "max_face_angle_leading_deg = 60 deg do not apply"));
+  // ... and none when they are left out (or the height criterion is 0)
+  std::string quiet = removed("max_face_angle_leading_deg", removed("min_lifter_height_m", plate));
+  CHECK(make_forecast_setup(load_config_text(quiet, "mill.toml", "."), {false, false, false}, false).warnings.empty());
+  quiet = edited_text(removed("max_face_angle_leading_deg", plate), "forecast", "min_lifter_height_m", "0.0");
+  CHECK(make_forecast_setup(load_config_text(quiet, "mill.toml", "."), {false, false, false}, false).warnings.empty());
 }
