@@ -464,14 +464,13 @@ Config load_config_file(const std::string& path) {
   if (!fs::exists(path, ec)) throw InputError(path, fmt::format("configuration file {} does not exist", path));
   if (fs::is_directory(path, ec))
     throw InputError(path, fmt::format("configuration file {} is a directory, not a TOML file", path));
-  require_regular_input_file(path, "configuration file");
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError(path, fmt::format("configuration file {} cannot be read (permissions?)", path));
-  std::stringstream ss;
-  ss << f.rdbuf();
-  if (f.bad()) throw InputError(path, fmt::format("configuration file {} cannot be read", path));
+  const std::string text = read_input_file(path, "configuration file");
+  // A configuration read from a pipe (`<(...)`, /dev/stdin) has its relative
+  // paths (profile_csv) taken from the working folder, not from /dev/fd.
   const fs::path base = fs::path(path).parent_path();
-  return load_config_text(ss.str(), path, base.empty() ? "." : base.string());
+  const std::string b = base.string();
+  const bool pseudo = b == "/dev" || b.rfind("/dev/", 0) == 0 || b.rfind("/proc/", 0) == 0;
+  return load_config_text(text, path, base.empty() || pseudo ? "." : b);
 }
 
 const std::string& default_config_text() {

@@ -1,6 +1,7 @@
 // The [charge] and [model] keys (DESIGN.md §4; issue 2 §2).
 #include "app/config.h"
 #include "app/config_schema_util.h"
+#include "charge/layer_model.h"
 
 namespace linerlife {
 
@@ -71,7 +72,8 @@ void add_model_keys(Schema& s) {
   s.keys.push_back(real_key("model", "time_step_s", "s",
                             "Time step of the layer model (a step that moves the shell more than 0.45 "
                             "media diameters per step is sub-stepped; docs/models/layer.md §9)",
-                            0.0, 0.1, true, false, 0.005, [](Config& c, double v) { c.model.time_step_s = v; },
+                            kLayerMinTimeStepS, 0.1, false, false, 0.005,
+                            [](Config& c, double v) { c.model.time_step_s = v; },
                             [](const Config& c) { return c.model.time_step_s; }));
   // Charge-motion issue: the layer model's options (docs/models/layer.md).
   s.keys.push_back(string_key("model", "slip_model",

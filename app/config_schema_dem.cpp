@@ -69,8 +69,9 @@ void add_dem_keys(Schema& s) {
   k.push_back(dem_real("steps_per_collision", "-",
                        "Time step = shortest collision time / this (refused below 5: unstable)", 5.0, 10000.0, false,
                        false, 8.0, &DemSpec::steps_per_collision));
-  k.push_back(dem_opt_real("time_step_s", "s", "The time step itself (refused beyond collision time / 5)", 0.0, 0.1,
-                           false, &DemSpec::time_step_s, "default: collision time / steps_per_collision"));
+  k.push_back(dem_opt_real("time_step_s", "s", "The time step itself (refused beyond collision time / 5)",
+                           kDemMinTimeStepS, 0.1, false, &DemSpec::time_step_s,
+                           "default: collision time / steps_per_collision", false));
   k.push_back(dem_real("coarse_grain", "-",
                        "Coarse-graining factor s: discs s times the media size, s^2 fewer (refused where the mill "
                        "does not allow it)",

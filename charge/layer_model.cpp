@@ -456,8 +456,9 @@ LayerSim::LayerSim(const ChargeInput& in) : in_(in) {
     throw InputError("charge.ball_diameter_m", fmt::format("ball_diameter_m = {}: must be > 0", c.ball_diameter_m));
   if (!(in.mill.speed_rpm > 0))
     throw InputError("mill.speed_rpm", fmt::format("speed_rpm = {}: must be > 0", in.mill.speed_rpm));
-  if (!(ms.time_step_s > 0) || !std::isfinite(ms.time_step_s))
-    throw InputError("model.time_step_s", fmt::format("time_step_s = {}: must be > 0", ms.time_step_s));
+  if (!(ms.time_step_s >= kLayerMinTimeStepS) || !std::isfinite(ms.time_step_s))
+    throw InputError("model.time_step_s", fmt::format("time_step_s = {} s: allowed >= {} s (docs/models/layer.md §9)",
+                                                      ms.time_step_s, kLayerMinTimeStepS));
   if (ms.variant == "1.0") variant_ = 10;
   else if (ms.variant == "1.1") variant_ = 11;
   else if (ms.variant == "1.2") variant_ = 12;

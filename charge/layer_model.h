@@ -31,4 +31,9 @@ std::unique_ptr<ChargeModel> make_layer_model();
 /// layer model sub-steps (from the time-step study, docs/models/layer.md).
 constexpr double kLayerMaxCourant = 0.45;
 
+/// [s] The shortest time_step_s accepted: a tenth of the finest step of the
+/// time-step study (1 ms, docs/models/layer.md §9), where power, toe and
+/// shoulder have long converged; 1e-9 s never ended (1e10 steps a revolution).
+constexpr double kLayerMinTimeStepS = 1e-4;
+
 }  // namespace linerlife

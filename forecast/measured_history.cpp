@@ -84,12 +84,8 @@ MeasuredHistory load_measured_history(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path, fmt::format("measured profile file {} does not exist", path));
   if (fs::is_directory(path, ec)) throw InputError(path, fmt::format("measured profile file {} is a directory", path));
-  require_regular_input_file(path, "measured profile file");
-  std::ifstream f(path);
-  if (!f) throw InputError(path, fmt::format("measured profile file {} cannot be read", path));
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return parse_measured_history(ss.str(), path);
+  const std::string text = read_input_file(path, "measured profile file");
+  return parse_measured_history(text, path);
 }
 
 void validate_measured_history(const MeasuredHistory& h, double R, int segments) {

@@ -12,11 +12,13 @@ namespace linerlife {
 /// some 400,000 measured points.
 constexpr std::uintmax_t kMaxInputFileBytes = 10'000'000;
 
-/// Throws InputError (keyed by `path`) unless `path` is a regular file of at
-/// most kMaxInputFileBytes: a device such as /dev/zero, a pipe or a socket
-/// would be read without end. `what` names the file in the message
-/// ("configuration file", "profile file", ...). Call it after the caller's own
-/// "does not exist" and "is a directory" checks.
-void require_regular_input_file(const std::string& path, const std::string& what);
+/// Reads the input file `path` whole, bounded: a regular file of at most
+/// kMaxInputFileBytes, or a pipe (`<(...)`, /dev/stdin fed by a pipe) read up
+/// to that size. Throws InputError keyed by `path` for a device such as
+/// /dev/zero or a socket (read without end), for a file or a pipe's stream
+/// larger than the bound, and for a file that cannot be read. `what` names the
+/// file in the messages ("configuration file", "profile file", ...). Call it
+/// after the caller's own "does not exist" and "is a directory" checks.
+std::string read_input_file(const std::string& path, const std::string& what);
 
 }  // namespace linerlife

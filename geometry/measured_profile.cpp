@@ -102,13 +102,8 @@ MeasuredProfile load_profile_csv(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path, fmt::format("profile file {} does not exist", path));
   if (fs::is_directory(path, ec)) throw InputError(path, fmt::format("profile file {} is a directory", path));
-  require_regular_input_file(path, "profile file");
-  std::ifstream f(path);
-  if (!f) throw InputError(path, fmt::format("profile file {} cannot be read", path));
-  std::stringstream ss;
-  ss << f.rdbuf();
-  if (f.bad()) throw InputError(path, fmt::format("profile file {} cannot be read", path));
-  return parse_profile_csv(ss.str(), path);
+  const std::string text = read_input_file(path, "profile file");
+  return parse_profile_csv(text, path);
 }
 
 void validate_measured_profile(const MeasuredProfile& p, double R, int segments) {

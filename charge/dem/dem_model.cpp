@@ -41,6 +41,7 @@ void validate_spec(const DemSpec& s) {
   if (s.collision_time_s > 0 && s.stiffness > 0)
     refuse("stiffness", "give collision_time_s or stiffness, not both");
   if (s.collision_time_s > 0) check_range("collision_time_s", s.collision_time_s, kDemMinCollisionTimeS, 1, false, "s");
+  if (s.time_step_s > 0) check_range("time_step_s", s.time_step_s, kDemMinTimeStepS, 0.1, false, "s");
   if (s.stiffness > 0) check_range("stiffness", s.stiffness, kDemMinStiffness, 1e15, false, "N/m per m");
   check_range("overlap_fraction", s.overlap_fraction, 0, 0.2, true, "overlap over diameter");
   if (!(s.steps_per_collision >= kDemMinStepsPerCollision))

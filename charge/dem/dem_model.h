@@ -25,6 +25,11 @@ constexpr double kDemMinStepsPerCollision = 5;
 /// takes some 100 times the default's steps, and 1e-12 s never ends.
 constexpr double kDemMinCollisionTimeS = 1e-5;
 
+/// [s] The shortest time_step_s accepted: a hundredth of the shortest
+/// collision time accepted (kDemMinCollisionTimeS). The default steps are about
+/// 0.1 ms; 1e-9 s never ended (a revolution of the Qiu slice in 4e9 steps).
+constexpr double kDemMinTimeStepS = 1e-7;
+
 /// [N/m per m] The softest `stiffness` accepted (linear k_n, or hertz k_h in
 /// N/m^1.5 per m). The default contacts of the Qiu slice are 1e7-4e8 N/m per m
 /// stiff; pilot test 1 runs at 1e5 and its discs pass through the liner at

@@ -151,6 +151,50 @@ TEST_CASE("input files that are devices or larger than 10 MB are refused naming 
   fs::remove_all(dir);
 }
 
+// A pipe has no size: since the 10 MB bound (above) every input that was not a
+// regular file was refused, process substitution and /dev/stdin among them.
+// A pipe is read again, up to the bound; a device still is not.
+TEST_CASE("a configuration or a measured history given through a pipe is read up to 10 MB",
+          "[app][cli][input]") {
+  const fs::path dir = temp_dir("pipe_input");
+  const fs::path out = dir / "out";
+  const std::string fifo = (dir / "fifo").string();
+  // a writer in the background (a shell's `&`): the run opens the pipe as its input
+  auto feed = [&](const std::string& source) {
+    REQUIRE(std::system(("rm -f " + fifo + " && mkfifo " + fifo).c_str()) == 0);
+    REQUIRE(std::system(("(" + source + " > " + fifo + " 2>/dev/null &)").c_str()) == 0);
+  };
+  const std::string cfg = (dir / "c.toml").string();
+  write_file(cfg, defaults_with("diameter_m = ", "diameter_m = 10.36"));
+  // the same numbers as from the file
+  const RunResult from_file = run_linerlife("geometry " + cfg + " --json", 60);
+  REQUIRE(from_file.code == 0);
+  feed("cat " + cfg);
+  const RunResult from_pipe = run_linerlife("geometry " + fifo + " --json", 60);
+  CHECK(from_pipe.code == 0);
+  const auto mass = [](const std::string& json) {
+    const auto at = json.find("\"liner_mass_kg\"");
+    return at == std::string::npos ? std::string() : json.substr(at, json.find('\n', at) - at);
+  };
+  CHECK(!mass(from_file.out).empty());
+  CHECK(mass(from_pipe.out) == mass(from_file.out));
+  // /dev/stdin fed by the shell
+  const RunResult from_stdin = run_linerlife("geometry /dev/stdin --json < " + cfg, 60);
+  CHECK(from_stdin.code == 0);
+  CHECK(mass(from_stdin.out) == mass(from_file.out));
+  // an endless pipe: refused once 10 MB are read, nothing written
+  feed("yes '# comment'");
+  check_refused(run_linerlife("geometry " + fifo + " --out " + out.string(), 60),
+                Refusal{"endless pipe", {"configuration file " + fifo + " is over 10000000 bytes",
+                                         "allowed at most 10000000 bytes (10 MB)"}},
+                out);
+  // a measured profile history through a pipe reaches calibrate's own checks
+  feed("printf 'hours,x_m,y_m\\n'");
+  check_refused(run_linerlife("calibrate --measured " + fifo + " --out " + out.string(), 60),
+                Refusal{"header-only pipe", {fifo + ": no measured profile in the file"}}, out);
+  fs::remove_all(dir);
+}
+
 // Values inside the old ranges that hung a run, ended in bad_alloc or failed
 // as a simulation (a review, reproduced on the binary before the fix): each is
 // now refused at its line with the range that works, before any work. Every
@@ -179,6 +223,11 @@ TEST_CASE("values that hung, ran out of memory or failed inside are refused at t
       // bad_alloc
       {"element_size_m = ", "element_size_m = 1e-9", "geometry",
        {"[liner] element_size_m = 1e-09: out of range; allowed 0.001 <= value <= 1 m"}},
+      // never ended (a revolution in some 1e10 steps of the layer model, 4e9 of the DEM)
+      {"time_step_s = ", "time_step_s = 1e-9", "charge --revolutions 1",
+       {"[model] time_step_s = 1e-09: out of range; allowed 0.0001 <= value <= 0.1 s"}},
+      {"# time_step_s = ", "time_step_s = 1e-9", "charge --model dem --revolutions 1",
+       {"[dem] time_step_s = 1e-09: out of range; allowed 1e-07 <= value <= 0.1 s"}},
       // inside the old range 1..400, but always refused as a top wider than 1e-15 m
       {"segments = ", "segments = 1", "geometry", {"[liner] segments = 1: out of range; allowed 2 <= value <= 400"}},
       // blamed coarse_grain = 1 for the discs that do not fit

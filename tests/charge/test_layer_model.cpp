@@ -428,6 +428,7 @@ TEST_CASE("the layer model refuses input it cannot take", "[charge][layer][input
   };
   refused([](ChargeInput& in) { in.charge.filling = 0; }, "charge.filling");
   refused([](ChargeInput& in) { in.model.time_step_s = -0.01; }, "model.time_step_s");
+  refused([](ChargeInput& in) { in.model.time_step_s = 1e-9; }, "model.time_step_s");  // never ended
   refused([](ChargeInput& in) { in.model.variant = "2.0"; }, "model.variant");
   refused([](ChargeInput& in) { in.model.slip_model = "magic"; }, "model.slip_model");
   refused([](ChargeInput& in) { in.model.slurry_drag = true; }, "model.slurry_drag");
