@@ -17,30 +17,46 @@ namespace linerlife {
 using V = Eigen::Vector2d;
 
 std::vector<double> profile_residuals(const std::vector<V>& measured, const std::vector<V>& sim) {
+  // the inward normal of an anticlockwise surface: the tangent turned by +90 deg
+  auto normal = [&](size_t i) {
+    const V ab = sim[i + 1] - sim[i];
+    const double l = ab.norm();
+    return l > 0 ? V(-ab.y(), ab.x()) / l : V(0, 0);
+  };
   std::vector<double> out;
   out.reserve(measured.size());
   for (const V& q : measured) {
-    double best = std::numeric_limits<double>::infinity(), sign = 1;
+    double best = std::numeric_limits<double>::infinity();
+    size_t seg = 0;
+    double at = 0;
     for (size_t i = 0; i + 1 < sim.size(); ++i) {
       const V ab = sim[i + 1] - sim[i];
       const double l2 = ab.squaredNorm();
       const double s = l2 > 0 ? std::clamp((q - sim[i]).dot(ab) / l2, 0.0, 1.0) : 0.0;
-      const V c = sim[i] + s * ab;
-      const double d = (q - c).norm();
-      if (d < best) {
-        best = d;
-        // the inward normal of an anticlockwise surface: the tangent turned by +90 deg
-        const V n = l2 > 0 ? V(-ab.y(), ab.x()) / std::sqrt(l2) : V(0, 0);
-        sign = (q - c).dot(n) >= 0 ? 1.0 : -1.0;
-      }
+      const double d = (q - (sim[i] + s * ab)).norm();
+      if (d < best) best = d, seg = i, at = s;
     }
-    out.push_back(sign * best);
+    if (!std::isfinite(best)) {
+      out.push_back(best);
+      continue;
+    }
+    // The side: by the nearest segment's normal, or where the nearest point is
+    // a node by the sum of its two segments' normals (the pseudo-normal). The
+    // normal of whichever segment came first flipped the sign of a point
+    // beyond a corner between two nearly equal forecasts, and with it the
+    // fit's Jacobian (a scan of a much worn lifter fitted in the wrong
+    // direction).
+    V n = normal(seg);
+    const bool at_start = at <= 0.0, at_end = at >= 1.0;
+    if (at_start && seg > 0) n += normal(seg - 1);
+    if (at_end && seg + 2 < sim.size()) n += normal(seg + 1);
+    const V c = at_end ? sim[seg + 1] : at_start ? sim[seg] : V(sim[seg] + at * (sim[seg + 1] - sim[seg]));
+    out.push_back((q - c).dot(n) >= 0 ? best : -best);
   }
   return out;
 }
 
 namespace {
-
 /// The forecast of a parameter set with snapshots at the measured hours and
 /// no end-of-life criteria: the residuals of every measured point.
 struct Fit {
@@ -60,20 +76,35 @@ struct Fit {
     return s;
   }
 
-  /// Residuals [m], and the RMS of each snapshot.
-  Eigen::VectorXd residuals(const std::vector<double>& params, std::vector<double>* per_snapshot = nullptr) {
+  /// Where a forecast ended before a measured profile: its hours, and the
+  /// first measured hours it did not reach (NaN when it reached them all).
+  struct Reach {
+    double end_h = 0;
+    double missed_h = std::numeric_limits<double>::quiet_NaN();
+    bool ok() const { return std::isnan(missed_h); }
+  };
+
+  /// Residuals [m], and the RMS of each snapshot. A forecast that wears the
+  /// liner through before a measured profile has no profile to compare with
+  /// it; its last one stands in (a residual that hardly changes with the
+  /// factors, so never one to fit: `reach` says so and the callers refuse it).
+  Eigen::VectorXd residuals(const std::vector<double>& params, std::vector<double>* per_snapshot = nullptr,
+                            Reach* reach = nullptr) {
     auto provider = p.make_provider(params);
     const ForecastResult f = run_forecast(p.input, *provider, fit_spec());
     ++forecasts;
     std::vector<double> all;
     if (per_snapshot) per_snapshot->clear();
+    if (reach) *reach = Reach{f.profiles.back().hours};
     const double R = p.input.initial->shell_radius_m;
     for (const auto& m : p.measured.snapshots) {
-      // the profile recorded at these hours (or the last one if the liner wore
-      // through first: a large residual the fit moves away from)
-      const ProfileRecord* rec = &f.profiles.back();
+      const ProfileRecord* rec = nullptr;
       for (const auto& pr : f.profiles)
         if (std::abs(pr.hours - m.hours) <= 1e-6 * std::max(1.0, m.hours)) rec = &pr;
+      if (!rec) {
+        rec = &f.profiles.back();
+        if (reach && reach->ok()) reach->missed_h = m.hours;
+      }
       const auto r = profile_residuals(unrolled_to_mill(m.points, R, p.segments), rec->nodes);
       double ss = 0;
       for (double x : r) ss += x * x;
@@ -140,7 +171,27 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
   CalibrationResult res;
   Eigen::VectorXd theta(np);
   for (int i = 0; i < np; ++i) theta(i) = std::log(p.initial[static_cast<size_t>(i)]);
-  Eigen::VectorXd r = fit.residuals(exp_of(theta));
+  // Start from factors whose forecast reaches the last measured profile: all
+  // of them scaled down by 0.8 times the share of its hours the liner lasted
+  // (exact for wear rates that do not change with time, a factor then being
+  // a scale of time), a few times over.
+  const double last_h = p.measured.snapshots.back().hours;
+  Fit::Reach reach;
+  Eigen::VectorXd r = fit.residuals(exp_of(theta), nullptr, &reach);
+  for (int tries = 0; !reach.ok() && tries < 6; ++tries) {
+    theta.array() += std::log(std::clamp(0.8 * reach.end_h / last_h, 1e-3, 0.8));
+    r = fit.residuals(exp_of(theta), nullptr, &reach);
+  }
+  auto refuse_unreached = [&](const char* which, const std::vector<double>& params) {
+    std::string f;
+    for (size_t i = 0; i < params.size(); ++i) f += fmt::format("{}{} {:.4g}", i ? ", " : "", p.names[i], params[i]);
+    throw InputError(p.measured.source,
+                     fmt::format("{}: the forecast with the {} factors ({}) wears the liner through at {:.0f} h, before "
+                                 "the profile measured at {:.6g} h, so it cannot be compared with it: are the profiles' "
+                                 "hours those since the liner was new?",
+                                 p.measured.source, which, f, reach.end_h, reach.missed_h));
+  };
+  if (!reach.ok()) refuse_unreached("starting (scaled down 6 times)", exp_of(theta));
   const Eigen::Index m = r.size();
   if (m <= np)
     throw InputError(p.measured.source, fmt::format("{}: {} measured points cannot fit {} parameters",
@@ -152,11 +203,20 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
   Eigen::MatrixXd J(m, np);
   // one forecast per parameter, independent: p.jobs at once, each filling
   // its own column
+  // (a forward step whose forecast no longer reaches a measured profile is
+  // taken backwards)
   auto jacobian = [&] {
     parallel_for(np, p.jobs, [&](int j) {
       Eigen::VectorXd t2 = theta;
       t2(j) += h;
-      J.col(j) = (fit.residuals(exp_of(t2)) - r) / h;
+      Fit::Reach rj;
+      Eigen::VectorXd rj2 = fit.residuals(exp_of(t2), nullptr, &rj);
+      if (rj.ok()) {
+        J.col(j) = (rj2 - r) / h;
+      } else {
+        t2(j) = theta(j) - h;
+        J.col(j) = (r - fit.residuals(exp_of(t2))) / h;
+      }
     });
   };
   for (int it = 0; it < p.max_iterations; ++it) {
@@ -174,9 +234,10 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
       // keep a step within a factor e of the parameters
       const double big = step.cwiseAbs().maxCoeff();
       if (big > 1.0) step /= big;
-      const Eigen::VectorXd r2 = fit.residuals(exp_of(theta + step));
+      Fit::Reach r2reach;
+      const Eigen::VectorXd r2 = fit.residuals(exp_of(theta + step), nullptr, &r2reach);
       const double rss2 = r2.squaredNorm();
-      if (rss2 < rss) {
+      if (rss2 < rss && r2reach.ok()) {
         theta += step;
         r = r2;
         const double rel = (rss - rss2) / std::max(rss, 1e-300);
@@ -223,7 +284,8 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
                                  "more than a factor of 10 at one sigma ({} fitted: {}); fit fewer factors (--fit), "
                                  "or measure profiles where and when the wear they scale shows",
                                  p.measured.source, loose, np, fmt::join(p.names, ",")));
-  fit.residuals(res.params, &res.rms_per_snapshot_m);
+  fit.residuals(res.params, &res.rms_per_snapshot_m, &reach);
+  if (!reach.ok()) refuse_unreached("fitted", res.params);  // cannot happen: every accepted step reached them
   res.rms_m = std::sqrt(rss / m);
   res.forecasts = fit.forecasts;
   return res;

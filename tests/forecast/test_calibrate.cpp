@@ -126,6 +126,66 @@ TEST_CASE("calibrate recovers a known wear coefficient from synthetic profiles",
   CHECK(r.sigma_log[0] < 0.02);
 }
 
+// The side of a measured point is that of the forecast surface's inward
+// normal; where the nearest point is a node, the sum of its two segments'
+// normals (the pseudo-normal). A worn profile can carry a thin spike (2 mm
+// segments in and back out in the fit below); beyond its tip the normal of
+// whichever segment came first gave a point on the charge side either sign,
+// and the fit's Jacobian with it (a scan fitted in the wrong direction).
+TEST_CASE("profile residuals are signed by the pseudo-normal at a spike's tip", "[forecast][calibrate]") {
+  // along x with the charge side up (an anticlockwise surface's left), and a
+  // spike standing 0.5 into the charge at x = 1.05
+  const std::vector<V> sim = {V(0, 0), V(1, 0), V(1.05, 0.5), V(1.1, 0), V(2, 0)};
+  const double d = std::hypot(0.25, 0.1);  // to the tip from either point below
+  CHECK(profile_residuals({V(1.3, 0.6)}, sim)[0] == Approx(d));  // before: -d
+  CHECK(profile_residuals({V(0.8, 0.6)}, sim)[0] == Approx(d));
+  CHECK(profile_residuals({V(1.05, 0.9)}, sim)[0] == Approx(0.4));
+  // away from the tip: the segments' own normals
+  CHECK(profile_residuals({V(0.5, 0.2)}, sim)[0] == Approx(0.2));
+  CHECK(profile_residuals({V(0.5, -0.2)}, sim)[0] == Approx(-0.2));
+  CHECK(profile_residuals({V(1.5, -0.3)}, sim)[0] == Approx(-0.3));
+}
+
+// A scan dated past the life the starting factors give (a 4,500 h profile
+// labelled 40,000 h, where the liner wears through at about 14,000 h): the fit
+// compared it with the worn-through liner's last profile, which hardly moves
+// with the factor, and stopped far from the answer calling it converged (the
+// bundled mill: a 4,400 h scan labelled 20,000 h fitted 10.5 with an rms of
+// 0.125 m). The fit now starts from factors that keep the liner to the last
+// scan, and a fit whose forecast ends before a scan is refused.
+TEST_CASE("calibrate fits a scan dated past the starting factors' life", "[forecast][calibrate]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  CalibrationProblem p;
+  p.names = {"k"};
+  p.initial = {1.0};
+  p.make_provider = [](const std::vector<double>& k) { return std::make_unique<TwoPartRates>(k[0], k[0]); };
+  p.input.initial = &s;
+  p.spec = spec();
+  p.segments = 64;
+  p.measured = scans(s, 1.3, 1.3, {4500});
+  // the rates do not depend on time, so a factor scales time: the profile of
+  // factor 1.3 at 4,500 h is that of factor 1.3 * 4,500 / 40,000 at 40,000 h
+  p.measured.snapshots[0].hours = 40000;
+  const CalibrationResult r = calibrate(p);
+  INFO("fitted k = " << r.params[0] << ", rms " << r.rms_m << " m from " << r.rms_initial_m << " m");
+  CHECK(r.params[0] == Approx(1.3 * 4500 / 40000).epsilon(0.02));
+  CHECK(r.rms_m < 1e-3);
+  SECTION("a scan no factor's forecast reaches is refused") {
+    // wear that hardly changes with the factor: the liner wears through at
+    // about 14,000 h whatever it is
+    p.make_provider = [](const std::vector<double>& k) {
+      return std::make_unique<TwoPartRates>(1 + 1e-3 * k[0], 1 + 1e-3 * k[0]);
+    };
+    try {
+      const CalibrationResult bad = calibrate(p);
+      FAIL("fitted " << bad.params[0] << " with rms " << bad.rms_m);
+    } catch (const InputError& e) {
+      CHECK(e.key() == "synthetic");
+      CHECK_THAT(e.what(), Catch::Contains("before the profile measured at 40000 h"));
+    }
+  }
+}
+
 TEST_CASE("calibrate separates two coefficients and gives a life spread", "[forecast][calibrate][slow]") {
   const LinerSurface s = build_liner_surface(qiu(), liner());
   CalibrationProblem p = two_factor_problem(s);
