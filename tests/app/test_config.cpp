@@ -58,6 +58,12 @@ void refused(const std::string& text, std::initializer_list<std::string> fragmen
   }
 }
 
+/// The bundled mill as a hi-lo liner whose low lifters have this height and top width.
+std::string hi_lo(const std::string& low_height, const std::string& low_top_width) {
+  return edited_text(edited_text(edited("liner", "pattern", "\"hi-lo\""), "liner", "low_lifter_height_m", low_height),
+                     "liner", "low_lifter_top_width_m", low_top_width);
+}
+
 }  // namespace
 
 TEST_CASE("the bundled default is the Qiu mill of thesis Table 5.1", "[app][config]") {
@@ -154,14 +160,10 @@ TEST_CASE("physically impossible mills are refused naming the key and the line",
 
 TEST_CASE("the low lifter of a hi-lo liner is refused under its own key", "[app][config][input]") {
   // a review: low_lifter_height_m = 1.5 was reported as "lifter_height_m = 1.5 m" (the line was right)
-  const std::string t = edited_text(
-      edited_text(edited("liner", "pattern", "\"hi-lo\""), "liner", "low_lifter_height_m", "1.5"), "liner",
-      "low_lifter_top_width_m", "0.1");
+  const std::string t = hi_lo("1.5", "0.1");
   refused(t, {"mill.toml:" + std::to_string(line_of(t, "low_lifter_height_m = 1.5")) +
                   ": low_lifter_height_m = 1.5 m: a lifter taller than a quarter of the shell radius"});
-  const std::string w = edited_text(
-      edited_text(edited("liner", "pattern", "\"hi-lo\""), "liner", "low_lifter_height_m", "0.15"), "liner",
-      "low_lifter_top_width_m", "0.6");
+  const std::string w = hi_lo("0.15", "0.6");
   refused(w, {"mill.toml:" + std::to_string(line_of(w, "low_lifter_top_width_m = 0.6")) +
                   ": low_lifter_top_width_m = 0.6 m: must be > 0 and narrower than the segment"});
 }
@@ -334,9 +336,7 @@ TEST_CASE("a forecast horizon whose date would pass 9999-12-31 is refused", "[ap
 
 TEST_CASE("a low lifter taller than the high one, and laws that say two things, are refused", "[app][config][input]") {
   // hi-lo: the low lifters are the lower ones
-  const std::string t = edited_text(
-      edited_text(edited("liner", "pattern", "\"hi-lo\""), "liner", "low_lifter_height_m", "0.3"), "liner",
-      "low_lifter_top_width_m", "0.1");
+  const std::string t = hi_lo("0.3", "0.1");
   refused(t, {"mill.toml:" + std::to_string(line_of(t, "low_lifter_height_m = 0.3")) +
                   ": low_lifter_height_m = 0.3 m is taller than lifter_height_m = 0.25 m",
               "allowed 0 <= low_lifter_height_m <= 0.25 m"});
