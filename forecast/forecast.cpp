@@ -465,18 +465,23 @@ class Life {
     return ymax > remesh_depth_ || min_element_projection(cell.base(), cell.displaced(y.data()), cell.size()) <= 0;
   }
 
-  /// The record of an output time inside an explicit step, at the depths y
-  /// of that time: the ring as the step would leave it there (remeshed when
-  /// a step ending there would remesh), the current cell unchanged.
-  void record_explicit(double t_s, const std::vector<double>& y, bool remesh_every_step) {
-    if (!explicit_remesh_due(cell_, y, remesh_every_step)) {
-      record_ring(t_s, cell_.displaced(y.data()));
-      return;
-    }
+  /// The ring an explicit step from the current cell would leave if it ended
+  /// at depths y: remeshed where a step ending there would remesh
+  /// (explicit_remesh_due), else the displaced ring. The current cell is
+  /// unchanged. The output rows inside a step and the step's criteria are
+  /// read on it, so a criterion is found on the state that is reported.
+  LinerSurface explicit_ring(const std::vector<double>& y, bool remesh_every_step) const {
+    if (!explicit_remesh_due(cell_, y, remesh_every_step)) return cell_.displaced(y.data());
     Cell c = cell_;
     c.remesh(y.data(), opt_);
     const std::vector<double> zero(static_cast<size_t>(c.size()), 0.0);
-    record_ring(t_s, c.displaced(zero.data()));
+    return c.displaced(zero.data());
+  }
+
+  /// The record of an output time inside an explicit step, at the depths y
+  /// of that time: the ring as the step would leave it there.
+  void record_explicit(double t_s, const std::vector<double>& y, bool remesh_every_step) {
+    record_ring(t_s, explicit_ring(y, remesh_every_step));
   }
 
   /// Remeshes at the current depths and carries the drive history onto the
@@ -852,62 +857,72 @@ void Life::run_explicit(double dt_s, double revolutions, bool remesh_every_step)
       next_explicit_out_ += out_dt;
     }
   };
-  double g_old[4];
-  crit_.eval(gauge_now(), g_old);
+  // The criteria at a fraction f of the step from t_ (length h), on the ring
+  // the step would leave if it ended there (explicit_ring()); the index of
+  // the criterion met (the one furthest past its limit), or -1.
+  auto crossed_at = [&](double f, double h, double* g) {
+    crit_.eval(gauge(explicit_ring(state_at(f, h), remesh_every_step), cell_.period(), in_.rotation,
+                     in_.density_kg_m3),
+               g);
+    int which = -1;
+    for (int i = 0; i < 4; ++i)
+      if (g[i] <= 0 && (which < 0 || g[i] < g[which])) which = i;
+    return which;
+  };
   while (t_ < horizon) {
     // the last step ends on the horizon: a life beyond it is not reached,
     // and the state at the horizon is the one reported for it
     const bool last = horizon - t_ <= dt_s * (1 + 1e-9);
     const double h = last ? horizon - t_ : dt_s;
     const std::vector<double> y_new = state_at(1.0, h);
-    const Gauge gn = gauge(cell_.displaced(y_new.data()), cell_.period(), in_.rotation, in_.density_kg_m3);
-    double g_new[4];
-    crit_.eval(gn, g_new);
     ++res_.stats.explicit_steps;
-    // the first criterion to cross: a first guess by linear interpolation of
-    // the criteria in the step
+    // The criteria are not monotone in the step fraction on a long step
+    // (amplify, a coarse Euler step): the remeshed profile can lay its face
+    // back past the limit and then lose the lifter, so that the step's end
+    // reads serviceable again. The step is therefore read at fractions at
+    // most one remesh depth of wear apart (the ODE method's remesh interval;
+    // one sample, the step's end, when the whole step wears less), and the
+    // first sample where a criterion is met brackets the crossing with the
+    // sample before it.
+    double move = 0;
+    for (int i = 0; i < cell_.size(); ++i) move = std::max(move, r_now_[i] * h);
+    const int samples = static_cast<int>(std::clamp(std::ceil(move / remesh_depth_ * (1 - 1e-9)), 1.0, 1e4));
     int first = -1;
-    double frac_first = 2;
-    for (int i = 0; i < 4; ++i)
-      if (g_new[i] <= 0) {
-        const double f = g_old[i] > g_new[i] ? g_old[i] / (g_old[i] - g_new[i]) : 1.0;
-        if (f < frac_first) {
-          frac_first = f;
-          first = i;
-        }
-      }
+    double lo = 0, hi = 1, g_lo[4], g_hi[4];
+    crit_.eval(gauge(explicit_ring(y_, remesh_every_step), cell_.period(), in_.rotation, in_.density_kg_m3), g_lo);
+    for (int k = 1; k <= samples; ++k) {
+      hi = static_cast<double>(k) / samples;
+      first = crossed_at(hi, h, g_hi);
+      if (first >= 0) break;
+      lo = hi;
+      std::copy(g_hi, g_hi + 4, g_lo);
+    }
     if (first >= 0) {
-      // Linear interpolation of the criteria is only a first guess: on a long
-      // step (amplify, a coarse Euler step) the displaced ring folds and the
-      // criteria are far from linear in the step fraction. The crossing is
-      // bracketed by [0, 1] (all criteria positive at 0, one not at 1) and
-      // located by bisection to 1e-6 of the step, so the end state meets the
-      // criterion it is reported for.
-      auto first_crossed = [&](double f, int& which) {
-        const std::vector<double> yf = state_at(f, h);
-        double g[4];
-        crit_.eval(gauge(cell_.displaced(yf.data()), cell_.period(), in_.rotation, in_.density_kg_m3), g);
-        which = -1;
-        for (int i = 0; i < 4; ++i)
-          if (g[i] <= 0 && (which < 0 || g[i] < g[which])) which = i;
-        return which >= 0;
-      };
-      double lo = 0, hi = 1;
+      // The crossing inside the bracket [lo, hi]: a first guess by linear
+      // interpolation of the criterion, then bisection of the step fraction
+      // to 1e-6 of the step on the same readings, so that the end state (the
+      // ring at hi, remeshed as the step would leave it) meets the criterion
+      // it is reported for.
       int w = -1;
-      if (first_crossed(frac_first, w)) hi = frac_first, first = w;
-      else lo = frac_first;
+      double g[4];
+      const double guess =
+          g_lo[first] > g_hi[first] ? lo + (hi - lo) * g_lo[first] / (g_lo[first] - g_hi[first]) : hi;
+      if (guess > lo && guess < hi) {
+        if ((w = crossed_at(guess, h, g)) >= 0) hi = guess, first = w;
+        else lo = guess;
+      }
       while (hi - lo > 1e-6) {
         const double mid = 0.5 * (lo + hi);
-        if (first_crossed(mid, w)) hi = mid, first = w;
+        if ((w = crossed_at(mid, h, g)) >= 0) hi = mid, first = w;
         else lo = mid;
       }
-      frac_first = hi;
-      const double t_end = last && frac_first == 1.0 ? horizon : t_ + frac_first * h;
+      const double t_end = last && hi == 1.0 ? horizon : t_ + hi * h;
       record_outputs_before(t_end, h);
-      y_ = state_at(frac_first, h);
-      // the final profile as a remesh makes it: on a long step the displaced
-      // ring folds, and the loops are material that the step wore away
-      do_remesh();
+      y_ = state_at(hi, h);
+      // the end profile is the ring the criterion was read on: remeshed where
+      // the step would remesh (on a long step the displaced ring folds, and
+      // the loops are material that the step wore away)
+      if (explicit_remesh_due(cell_, y_, remesh_every_step)) do_remesh();
       finish(t_end, Criteria::name(first), true);
       return;
     }
@@ -915,18 +930,17 @@ void Life::run_explicit(double dt_s, double revolutions, bool remesh_every_step)
     record_outputs_before(t_end, h);
     y_ = y_new;
     t_ = t_end;
-    std::copy(g_new, g_new + 4, g_old);
     // as the ODE method's roots: the depth, and an element turned by 90 deg
     // (checked after the step, so a turned element never reaches a drive)
     if (explicit_remesh_due(cell_, y_, remesh_every_step)) {
       do_remesh();
       // a criterion the remesh itself meets ends the life here, as in run_ode
+      // (the step's last sample already read this remeshed ring: a guard)
       const int met = criterion_met();
       if (met >= 0) {
         finish(t_, Criteria::name(met), true);
         return;
       }
-      crit_.eval(gauge_now(), g_old);  // the step's start for the next crossing's first guess
     }
     if (last) break;  // the horizon: finish() records it
     // the output time at the step's end, after its remesh
