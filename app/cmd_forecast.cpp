@@ -259,7 +259,8 @@ void register_forecast(CLI::App& app, std::function<int()>& run) {
       ->check(CLI::IsMember({"ode", "amplify", "euler"}));
   cmd->add_flag("--json", o->json, "Print one JSON object instead of the human summary");
   cmd->add_flag("--quiet", o->quiet, "No progress bar");
-  cmd->add_option("--out", o->out, "Write forecast.h5 and charts into this folder (and checkpoints while running)");
+  cmd->add_option("--out", o->out, "Write forecast.h5 and charts into this folder (and checkpoints while running)")
+      ->check(out_folder_check("without --out nothing is written"));
   cmd->add_flag("--resume", o->resume, "Continue the run in --out DIR from its last checkpoint");
   cmd->callback([&run, o] { run = [o] { return run_forecast_command(*o); }; });
 }

@@ -64,7 +64,8 @@ void register_plot(CLI::App& app, std::function<int()>& run) {
   auto o = std::make_shared<PlotOptions>();
   auto* cmd = app.add_subcommand("plot", "Redraw the charts of a results file");
   cmd->add_option("RESULTS", o->file, "A results file written by --out (geometry.h5, forecast.h5, ...)")->required();
-  cmd->add_option("--out", o->out, "Folder for the charts (default: the file's folder)");
+  cmd->add_option("--out", o->out, "Folder for the charts (default: the file's folder)")
+      ->check(out_folder_check("without --out the charts go into the results file's folder"));
   cmd->callback([&run, o] { run = [o] { return run_plot(*o); }; });
 }
 

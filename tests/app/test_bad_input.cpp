@@ -351,6 +351,24 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
   fs::remove_all(dir);
 }
 
+TEST_CASE("an empty --out is refused by every command that takes one", "[app][cli][input]") {
+  // a review: `--out ""` was taken for no --out; the run exited 0, printed
+  // its results and wrote no file
+  const fs::path dir = temp_dir("empty_out");
+  write_file(dir / "r.h5", "");
+  const std::vector<std::string> commands = {"geometry", "charge",    "wear", "forecast --quiet",
+                                             "compare",  "calibrate", "plot " + (dir / "r.h5").string()};
+  for (const std::string& cmd : commands) {
+    const RunResult r = run_linerlife(cmd + " --out ''", 30);  // before: a whole run of the bundled mill
+    INFO(cmd << "\n" << r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::StartsWith("linerlife: error: --out: an empty folder name (--out \"\"); allowed the "
+                                        "path of a folder to write into, e.g. --out results ("));
+    CHECK(r.out.empty());  // refused by the parser, before any work
+  }
+  fs::remove_all(dir);
+}
+
 // Factors the data cannot determine: before, J^T J was singular, the
 // factor's sigma came out 0 and P10 = P50 = P90 with exit 0. Refused before
 // any forecast (the wear laws), or before the first (the profiles).
