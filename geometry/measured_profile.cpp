@@ -1,6 +1,8 @@
 #include "geometry/measured_profile.h"
 
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -9,6 +11,7 @@
 
 #include "geometry/errors.h"
 #include "geometry/input_file.h"
+#include "geometry/input_text.h"
 #include "geometry/mill.h"
 
 namespace linerlife {
@@ -23,16 +26,21 @@ std::string trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
-bool parse_double(const std::string& s, double& out) {
-  const std::string t = trim(s);
-  if (t.empty()) return false;
-  try {
-    size_t pos = 0;
-    out = std::stod(t, &pos);
-    return pos == t.size();
-  } catch (...) {
-    return false;
+/// What a field parse_decimal refuses is: "a non-finite value" (nan, inf),
+/// "a hexadecimal number" (0x1p-3, which strtod reads), "beyond the range of
+/// a double" (1e400), or "not a decimal number".
+std::string not_decimal(const std::string& field) {
+  const char* s = field.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(s, &end);
+  if (end != s && end == s + field.size()) {
+    if (errno == ERANGE) return "beyond the range of a double";
+    if (!std::isfinite(v)) return "a non-finite value";
+    const auto x = field.find_first_of("xX");
+    if (x != std::string::npos && x > 0 && field[x - 1] == '0') return "a hexadecimal number";
   }
+  return "not a decimal number";
 }
 
 double cross(const V& a, const V& b) { return a.x() * b.y() - a.y() * b.x(); }
@@ -75,20 +83,20 @@ MeasuredProfile parse_profile_csv(const std::string& text, const std::string& so
     const auto comma = t.find(',');
     if (comma == std::string::npos)
       throw InputError(source, fmt::format("{}:{}: expected two comma-separated numbers \"x_m,y_m\", got \"{}\"",
-                                           source, lineno, t));
+                                           source, lineno, printable(t)));
     const std::string a = t.substr(0, comma), b = t.substr(comma + 1);
     double x = 0, y = 0;
-    if (!parse_double(a, x) || !parse_double(b, y)) {
+    if (!parse_decimal(a, x) || !parse_decimal(b, y)) {
       if (header_allowed && trim(a) == "x_m" && trim(b) == "y_m") {
         header_allowed = false;
         continue;
       }
-      throw InputError(source, fmt::format("{}:{}: \"{}\" is not a pair of numbers x_m,y_m (metres)", source,
-                                           lineno, t));
+      const std::string field = trim(parse_decimal(a, x) ? b : a);
+      throw InputError(source, fmt::format("{}:{}: \"{}\" is not a pair of numbers x_m,y_m (metres): \"{}\" is {}; "
+                                           "allowed decimal numbers such as 0.075 or 7.5e-2",
+                                           source, lineno, printable(t), printable(field), not_decimal(field)));
     }
     header_allowed = false;
-    if (!std::isfinite(x) || !std::isfinite(y))
-      throw InputError(source, fmt::format("{}:{}: non-finite value in \"{}\"", source, lineno, t));
     p.points.emplace_back(x, y);
     p.lines.push_back(lineno);
   }

@@ -268,6 +268,9 @@ TEST_CASE("measured profile files given to calibrate exit 2 naming the file, lin
                                      "500,0,0.075\n500,0.25,0.3\n500,0.508618,0.075\n");
   write_file(dir / "negative.csv", head + "-5,0,0.075\n-5,0.25,0.3\n-5,0.508618,0.075\n");
   write_file(dir / "two.csv", head + "1000,0,0.075\n1000,0.25,0.3\n");
+  // a review: hexadecimal numbers were taken, binary bytes quoted raw
+  write_file(dir / "hex.csv", head + "1000,0,0.075\n1000,0.25,0x1p-3\n1000,0.508618,0.075\n");
+  write_file(dir / "binary.csv", head + "1000,0,0.075\n1000,0.25,0.1" + std::string(1, '\0') + "\x07\xfe\n");
   const std::vector<Refusal> cases = {
       {"empty.csv", {"empty.csv: no measured profile in the file"}},
       {"header.csv", {"header.csv: no measured profile in the file"}},
@@ -281,6 +284,9 @@ TEST_CASE("measured profile files given to calibrate exit 2 naming the file, lin
       {"unsorted.csv", {"unsorted.csv:5: hours = 500 after a profile at 1000 h", "increasing hours"}},
       {"negative.csv", {"negative.csv:2: hours = -5", "must be >= 0"}},
       {"two.csv", {"two.csv:2:", "has 2 points; at least 3"}},
+      {"hex.csv", {"hex.csv:3: expected three numbers \"hours,x_m,y_m\", got \"1000,0.25,0x1p-3\"; allowed decimal "
+                   "numbers"}},
+      {"binary.csv", {"binary.csv:3: expected three numbers \"hours,x_m,y_m\", got \"1000,0.25,0.1\\x00\\x07\\xFE\""}},
       {"missing.csv", {"measured profile file", "missing.csv does not exist"}},
   };
   for (const Refusal& c : cases)

@@ -49,6 +49,16 @@ TEST_CASE("bad profile files are refused naming the file and the line", "[geomet
   refuse_text("0,0.1\n0.1,abc\n0.2,0.1\n", "bad.csv:2");
   refuse_text("0 0.1\n", "two comma-separated");
   refuse_text("0,0.1\n0.1,nan\n0.2,0.1\n", "non-finite");
+  // a review: strtod's hexadecimal numbers were taken (0x1p-3 = 0.125 m), and
+  // a line with binary bytes was quoted raw (a NUL cut the message there)
+  refuse_text("0,0.1\n0.1,0x1p-3\n0.2,0.1\n", "bad.csv:2: \"0.1,0x1p-3\" is not a pair of numbers x_m,y_m (metres): "
+                                             "\"0x1p-3\" is a hexadecimal number; allowed decimal numbers");
+  refuse_text("0,0.1\n0.1,1e400\n0.2,0.1\n", "\"1e400\" is beyond the range of a double");
+  refuse_text(std::string("0,0.1\n0.1,0.0") + '\0' + "\x01\xff\n0.2,0.1\n",
+              "bad.csv:2: \"0.1,0.0\\x00\\x01\\xFF\" is not a pair of numbers x_m,y_m (metres): \"0.0\\x00\\x01\\xFF\" is "
+              "not a decimal number");
+  refuse_text(std::string("0,0.1\n\x1b[2J") + "\n", "bad.csv:2: expected two comma-separated numbers \"x_m,y_m\", got "
+                                                  "\"\\x1B[2J\"");
 
   auto refuse_profile = [](std::vector<V> pts, const std::string& words) {
     MeasuredProfile p;
@@ -92,3 +102,4 @@ TEST_CASE("bad profile files are refused naming the file and the line", "[geomet
   CHECK_THROWS_WITH(load_profile_csv("/nonexistent/scan.csv"), Catch::Contains("does not exist"));
   CHECK_THROWS_WITH(load_profile_csv(fs::temp_directory_path().string()), Catch::Contains("is a directory"));
 }
+
