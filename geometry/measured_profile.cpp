@@ -1,5 +1,6 @@
 #include "geometry/measured_profile.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -152,11 +153,38 @@ void validate_measured_profile(const MeasuredProfile& p, double R, int segments)
     throw InputError(p.source, fmt::format("{}: {} lies on the segment edge as well as {}: a radial step on "
                                            "the edge is not allowed; move it at least 1 mm into the segment",
                                            p.source, pts[1].x() <= tol ? pt(1) : pt(n - 2), pts[1].x() <= tol ? pt(0) : pt(n - 1)));
+  // detail finer than kMinProfileDetailM (a point repeated, a needle): checked
+  // before the crossings, which a repeated point would be reported as
+  const double d_min = kMinProfileDetailM;
+  for (size_t i = 0; i + 1 < n; ++i) {
+    const double d = (pts[i + 1] - pts[i]).norm();
+    if (d < d_min)
+      throw InputError(p.source, fmt::format("{}: {} is {:.3g} mm from {}: consecutive points closer than {} mm are "
+                                             "finer than any measurement of a liner; allowed at least {} mm apart "
+                                             "(leave one of them out)",
+                                             p.source, pt(i + 1), d * 1e3, pt(i), d_min * 1e3, d_min * 1e3));
+  }
   const auto [a, b] = first_self_crossing(pts);
   if (a >= 0)
     throw InputError(p.source, fmt::format("{}: the profile crosses itself: the stretch from {} to {} crosses the one "
                                            "from {} to {}",
                                            p.source, pt(a), pt(a + 1), pt(b), pt(b + 1)));
+  for (size_t j = 0; j + 1 < n; ++j) {
+    const Eigen::Array2d lo = pts[j].cwiseMin(pts[j + 1]).array() - d_min;
+    const Eigen::Array2d hi = pts[j].cwiseMax(pts[j + 1]).array() + d_min;
+    const V e = pts[j + 1] - pts[j];
+    for (size_t i = 0; i < n; ++i) {
+      if (i == j || i == j + 1 || (pts[i].array() < lo).any() || (pts[i].array() > hi).any()) continue;
+      const double t = std::clamp((pts[i] - pts[j]).dot(e) / e.squaredNorm(), 0.0, 1.0);
+      const double d = (pts[j] + t * e - pts[i]).norm();
+      if (d < d_min)
+        throw InputError(p.source, fmt::format("{}: {} is {:.3g} mm from the stretch from {} to {}: a needle or a fold "
+                                               "of the profile thinner than {} mm is finer than any measurement of a "
+                                               "liner; allowed at least {} mm between a point and the stretches it "
+                                               "does not end",
+                                               p.source, pt(i), d * 1e3, pt(j), pt(j + 1), d_min * 1e3, d_min * 1e3));
+    }
+  }
 }
 
 std::vector<V> measured_profile_to_segment(const MeasuredProfile& p, double R, int segments, double h) {
