@@ -9,7 +9,7 @@
 
 using namespace linerlife;
 
-TEST_CASE("input fields are decimal numbers; hexadecimal, nan and inf are not", "[geometry][csv][input]") {
+TEST_CASE("input fields are decimal numbers, not hexadecimal, nan or inf", "[geometry][csv][input]") {
   auto value = [](const std::string& s) {
     double v = -12345;
     REQUIRE(parse_decimal(s, v));
