@@ -143,7 +143,7 @@ TEST_CASE("the layer model's power history carries a caveat when it departs from
   CHECK(worn_power_caveat("layer", h, {6000, nan, 9000, 6100}).find("+50 %") != std::string::npos);
 }
 
-TEST_CASE("forecast --out writes the results file and its charts; plot redraws them", "[app][cli][forecast][plot]") {
+TEST_CASE("forecast --out writes the results file and its charts, and plot redraws them", "[app][cli][forecast][plot]") {
   const fs::path dir = temp_dir("fc_out");
   write_file(dir / "m.toml", fast_qiu());
   const RunResult r = run_linerlife("forecast " + (dir / "m.toml").string() + " --quiet --out " + (dir / "run").string());
@@ -246,7 +246,7 @@ TEST_CASE("plot refuses a results file whose drawn data hold NaN or infinite val
   fs::remove_all(dir);
 }
 
-TEST_CASE("forecast runs each method from the command line; euler agrees with the ODE", "[app][cli][forecast]") {
+TEST_CASE("forecast runs each method from the command line, and euler agrees with the ODE", "[app][cli][forecast]") {
   const fs::path dir = temp_dir("fc_methods");
   write_file(dir / "m.toml", fast_qiu());
   double life[3] = {0, 0, 0};
