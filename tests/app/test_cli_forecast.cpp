@@ -225,7 +225,10 @@ TEST_CASE("plot refuses a results file whose drawn data hold NaN or infinite val
     const std::string py = "/usr/bin/python3 -c \"import h5py; f = h5py.File('" + bad.string() + "', 'r+'); " +
                            c.python + "; f.close()\"";
     REQUIRE(std::system(py.c_str()) == 0);
-    for (const std::string& out : {std::string(), " --out " + (dir / "charts" / "sub").string()}) {
+    // into a new folder; the first case also beside the file
+    std::vector<std::string> outs = {" --out " + (dir / "charts" / "sub").string()};
+    if (&c == &cases.front()) outs.push_back("");
+    for (const std::string& out : outs) {
       r = run_linerlife("plot " + bad.string() + out);
       INFO(out << "\n" << r.err);
       CHECK(r.code == 2);
@@ -237,12 +240,7 @@ TEST_CASE("plot refuses a results file whose drawn data hold NaN or infinite val
       CHECK(std::distance(fs::directory_iterator(bad_dir), fs::directory_iterator()) == 1);  // bad.h5 alone
     }
   }
-  // the undamaged files draw
-  for (const fs::path& good : {dir / "run" / "forecast.h5", dir / "geo" / "geometry.h5"}) {
-    r = run_linerlife("plot " + good.string() + " --out " + (dir / "charts").string());
-    INFO(r.err);
-    CHECK(r.code == 0);
-  }
+  // (undamaged files draw: "forecast --out writes the results file and its charts, and plot redraws them")
   fs::remove_all(dir);
 }
 
