@@ -254,7 +254,8 @@ void register_charge(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--revolutions", opts->revolutions,
                   "Mill revolutions to average over, after settling (default 2; 0 < N <= 1e4)");
   cmd->add_flag("--json", opts->json, "Print one JSON object instead of the human summary");
-  cmd->add_option("--out", opts->out, "Write charge.h5 and charts into this folder");
+  cmd->add_option("--out", opts->out, "Write charge.h5 and charts into this folder")
+      ->check(out_folder_check("without --out nothing is written"));
   cmd->callback([&run, opts] { run = [opts] { return run_charge(*opts); }; });
 }
 

@@ -334,7 +334,8 @@ void register_compare(CLI::App& app, std::function<int()>& run) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--method", o->method, "ode (default), amplify or euler")->check(CLI::IsMember({"ode", "amplify", "euler"}));
   cmd->add_flag("--json", o->json, "Print one JSON object instead of the table");
-  cmd->add_option("--out", o->out, "Write compare.h5 and charts into this folder");
+  cmd->add_option("--out", o->out, "Write compare.h5 and charts into this folder")
+      ->check(out_folder_check("without --out nothing is written"));
   cmd->add_option("--jobs", o->jobs, "Forecasts run at once (default: one per core; one at a time with the DEM)");
   cmd->callback([&run, o] { run = [o] { return run_compare(*o); }; });
 }

@@ -106,8 +106,15 @@ int run_forecast_command(const ForecastOptions& o) {
         hooks.resume = &resume_from;
         if (!o.json && !o.quiet)
           std::cerr << fmt::format("  resuming from {} at {:.0f} operating hours\n", cp, resume_from.t_s / 3600.0);
-      } else if (!o.json && !o.quiet) {
-        std::cerr << fmt::format("  no checkpoint in {}: starting from the beginning\n", o.out);
+      } else {
+        // said whatever --quiet and --json: the user asked to continue a run
+        // and gets a whole new one (a note on stderr, the run goes on)
+        std::error_code ec;
+        const bool results = std::filesystem::exists(dir->path("forecast.h5"), ec);
+        note(fmt::format("linerlife: note: --resume: no checkpoint in {} ({} does not exist): the forecast starts "
+                         "from the new liner{}",
+                         o.out, cp, results ? "; the forecast.h5 there, of a run that ended, is replaced when it ends"
+                                            : ""));
       }
     }
     // the folder is created with the first file written into it, so that input
@@ -259,8 +266,10 @@ void register_forecast(CLI::App& app, std::function<int()>& run) {
       ->check(CLI::IsMember({"ode", "amplify", "euler"}));
   cmd->add_flag("--json", o->json, "Print one JSON object instead of the human summary");
   cmd->add_flag("--quiet", o->quiet, "No progress bar");
-  cmd->add_option("--out", o->out, "Write forecast.h5 and charts into this folder (and checkpoints while running)");
-  cmd->add_flag("--resume", o->resume, "Continue the run in --out DIR from its last checkpoint");
+  cmd->add_option("--out", o->out, "Write forecast.h5 and charts into this folder (and checkpoints while running)")
+      ->check(out_folder_check("without --out nothing is written"));
+  cmd->add_flag("--resume", o->resume, "Continue the run in --out DIR from its last checkpoint (without one: a note "
+                                       "on stderr, even with --quiet, and the run starts from the new liner)");
   cmd->callback([&run, o] { run = [o] { return run_forecast_command(*o); }; });
 }
 

@@ -101,7 +101,8 @@ void register_geometry(CLI::App& app, std::function<int()>& run) {
   auto* cmd = app.add_subcommand("geometry", "Build the liner ring and report lifter height, face angles, mass...");
   cmd->add_option("CONFIG", opts->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill");
   cmd->add_flag("--json", opts->json, "Print one JSON object instead of the human summary");
-  cmd->add_option("--out", opts->out, "Write geometry.h5 and charts into this folder");
+  cmd->add_option("--out", opts->out, "Write geometry.h5 and charts into this folder")
+      ->check(out_folder_check("without --out nothing is written"));
   cmd->callback([&run, opts] { run = [opts] { return run_geometry(*opts); }; });
 }
 

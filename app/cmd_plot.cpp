@@ -29,6 +29,29 @@ std::string results_kind(const std::string& path) {
   return h5.attr_string("/", "command");
 }
 
+/// The outermost folder of `dir` that does not exist yet (the one creating
+/// `dir` makes first), or empty if `dir` exists.
+std::filesystem::path first_missing_folder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path created;
+  for (fs::path p = fs::absolute(dir, ec); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+    created = p;
+    if (p == p.parent_path()) break;
+  }
+  return created;
+}
+
+/// Removes the folder `dir` this run created, unless it holds a file.
+void remove_if_no_files(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (dir.empty() || !fs::is_directory(dir, ec)) return;
+  for (const auto& e : fs::recursive_directory_iterator(dir, ec))
+    if (!e.is_directory(ec)) return;
+  fs::remove_all(dir, ec);
+}
+
 int run_plot(const PlotOptions& o) {
   const std::string kind = results_kind(o.file);
   if (kind == "checkpoint")
@@ -43,11 +66,17 @@ int run_plot(const PlotOptions& o) {
   }
   const std::string dir = o.out.empty() ? std::filesystem::path(o.file).parent_path().string() : o.out;
   OutputDir out(dir.empty() ? "." : dir);
+  const std::filesystem::path created = first_missing_folder(out.dir());
   out.prepare();
-  const int rc = run_plot_script(kind, o.file, out.dir());
+  std::string report;
+  const int rc = run_plot_script(kind, o.file, out.dir(), &report);
+  if (rc == 3 || rc == 4) remove_if_no_files(created);  // a damaged file: nothing written
   if (rc == 3)
     throw InputError(o.file, fmt::format("results file {} is damaged or incomplete: it lacks a group, dataset or "
                                          "attribute a {} results file has (above)", o.file, kind));
+  if (rc == 4)
+    throw InputError(o.file, fmt::format("results file {} is damaged: dataset {}; allowed only finite numbers there "
+                                         "in a {} results file: nothing drawn", o.file, report, kind));
   if (rc != 0) {
     std::cerr << (rc == -1 ? "linerlife: error: the plotting script is not installed\n"
                            : fmt::format("linerlife: error: charts not drawn (the plotting script exited with {}): "
@@ -64,7 +93,8 @@ void register_plot(CLI::App& app, std::function<int()>& run) {
   auto o = std::make_shared<PlotOptions>();
   auto* cmd = app.add_subcommand("plot", "Redraw the charts of a results file");
   cmd->add_option("RESULTS", o->file, "A results file written by --out (geometry.h5, forecast.h5, ...)")->required();
-  cmd->add_option("--out", o->out, "Folder for the charts (default: the file's folder)");
+  cmd->add_option("--out", o->out, "Folder for the charts (default: the file's folder)")
+      ->check(out_folder_check("without --out the charts go into the results file's folder"));
   cmd->callback([&run, o] { run = [o] { return run_plot(*o); }; });
 }
 

@@ -166,7 +166,8 @@ void register_wear(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--rotation", opts->rotation, "Turn the mill this way with the same liner ([mill] rotation)")
       ->check(CLI::IsMember({"ccw", "cw"}));
   cmd->add_flag("--json", opts->json, "Print one JSON object instead of the human summary");
-  cmd->add_option("--out", opts->out, "Write wear.h5 and charts into this folder");
+  cmd->add_option("--out", opts->out, "Write wear.h5 and charts into this folder")
+      ->check(out_folder_check("without --out nothing is written"));
   cmd->callback([&run, opts] { run = [opts] { return run_wear_command(*opts); }; });
 }
 

@@ -29,6 +29,12 @@ void register_compare(CLI::App& app, std::function<int()>& run);
 void register_calibrate(CLI::App& app, std::function<int()>& run);
 void register_plot(CLI::App& app, std::function<int()>& run);
 
+/// The check of an --out option: an empty folder name (`--out ""`) is refused
+/// by the parser (exit 2, "--out: an empty folder name ..."); before, the
+/// commands took it for no --out and wrote nothing. `without` says what the
+/// command does without --out.
+CLI::Validator out_folder_check(const std::string& without);
+
 /// The program version ("0.1.0 (git abc1234)").
 const char* program_version();
 

@@ -13,6 +13,16 @@ namespace linerlife {
 
 const char* program_version() { return LINERLIFE_VERSION; }
 
+CLI::Validator out_folder_check(const std::string& without) {
+  return CLI::Validator(
+      [without](std::string& dir) -> std::string {
+        if (!dir.empty()) return "";
+        return "an empty folder name (--out \"\"); allowed the path of a folder to write into, e.g. --out results "
+               "(" + without + ")";
+      },
+      "");
+}
+
 Config load_config_or_default(const std::string& path) {
   return path.empty() ? load_default_config() : load_config_file(path);
 }

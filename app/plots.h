@@ -14,9 +14,12 @@ namespace linerlife {
 bool draw_charts(const std::string& kind, const std::string& results_h5, const std::string& out_dir);
 
 /// The exit status of the plotting script (linerlife_plot.py: 0 drawn, 3 the
-/// file lacks what its kind has, other the environment), -1 if the script is
-/// not found; no warning printed.
-int run_plot_script(const std::string& kind, const std::string& results_h5, const std::string& out_dir);
+/// file lacks what its kind has, 4 a dataset it draws holds a NaN or an
+/// infinite value, other the environment), -1 if the script is not found; no
+/// warning printed. `report`, when given, gets what the script printed on its
+/// standard output (with 4: "DATASET: what is wrong"), without the last newline.
+int run_plot_script(const std::string& kind, const std::string& results_h5, const std::string& out_dir,
+                    std::string* report = nullptr);
 
 /// The kinds of results file that have charts (a plot_KIND.py next to the
 /// plotting script), sorted.

@@ -9,6 +9,7 @@
 
 #include "geometry/errors.h"
 #include "geometry/input_file.h"
+#include "geometry/input_text.h"
 #include "geometry/measured_profile.h"
 #include "geometry/mill.h"
 
@@ -21,17 +22,7 @@ std::string trim(const std::string& s) {
   return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
 }
 
-bool number(const std::string& s, double& v) {
-  const std::string t = trim(s);
-  if (t.empty()) return false;
-  try {
-    size_t pos = 0;
-    v = std::stod(t, &pos);
-    return pos == t.size() && std::isfinite(v);
-  } catch (...) {
-    return false;
-  }
-}
+bool number(const std::string& s, double& v) { return parse_decimal(s, v); }
 
 }  // namespace
 
@@ -57,8 +48,9 @@ MeasuredHistory parse_measured_history(const std::string& text, const std::strin
     header_allowed = false;
     double hr = 0, x = 0, y = 0;
     if (f.size() != 3 || !number(f[0], hr) || !number(f[1], x) || !number(f[2], y))
-      throw InputError(source, fmt::format("{}:{}: expected three numbers \"hours,x_m,y_m\", got \"{}\"", source,
-                                           lineno, t));
+      throw InputError(source, fmt::format("{}:{}: expected three numbers \"hours,x_m,y_m\", got \"{}\"; allowed "
+                                           "decimal numbers such as 1000, 0.25 or 7.5e-2",
+                                           source, lineno, printable(t)));
     if (hr < 0)
       throw InputError(source, fmt::format("{}:{}: hours = {}: operating hours must be >= 0", source, lineno, hr));
     if (h.snapshots.empty() || hr != h.snapshots.back().hours) {

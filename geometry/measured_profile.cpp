@@ -1,6 +1,9 @@
 #include "geometry/measured_profile.h"
 
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -9,6 +12,7 @@
 
 #include "geometry/errors.h"
 #include "geometry/input_file.h"
+#include "geometry/input_text.h"
 #include "geometry/mill.h"
 
 namespace linerlife {
@@ -23,16 +27,21 @@ std::string trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
-bool parse_double(const std::string& s, double& out) {
-  const std::string t = trim(s);
-  if (t.empty()) return false;
-  try {
-    size_t pos = 0;
-    out = std::stod(t, &pos);
-    return pos == t.size();
-  } catch (...) {
-    return false;
+/// What a field parse_decimal refuses is: "a non-finite value" (nan, inf),
+/// "a hexadecimal number" (0x1p-3, which strtod reads), "beyond the range of
+/// a double" (1e400), or "not a decimal number".
+std::string not_decimal(const std::string& field) {
+  const char* s = field.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(s, &end);
+  if (end != s && end == s + field.size()) {
+    if (errno == ERANGE) return "beyond the range of a double";
+    if (!std::isfinite(v)) return "a non-finite value";
+    const auto x = field.find_first_of("xX");
+    if (x != std::string::npos && x > 0 && field[x - 1] == '0') return "a hexadecimal number";
   }
+  return "not a decimal number";
 }
 
 double cross(const V& a, const V& b) { return a.x() * b.y() - a.y() * b.x(); }
@@ -75,20 +84,20 @@ MeasuredProfile parse_profile_csv(const std::string& text, const std::string& so
     const auto comma = t.find(',');
     if (comma == std::string::npos)
       throw InputError(source, fmt::format("{}:{}: expected two comma-separated numbers \"x_m,y_m\", got \"{}\"",
-                                           source, lineno, t));
+                                           source, lineno, printable(t)));
     const std::string a = t.substr(0, comma), b = t.substr(comma + 1);
     double x = 0, y = 0;
-    if (!parse_double(a, x) || !parse_double(b, y)) {
+    if (!parse_decimal(a, x) || !parse_decimal(b, y)) {
       if (header_allowed && trim(a) == "x_m" && trim(b) == "y_m") {
         header_allowed = false;
         continue;
       }
-      throw InputError(source, fmt::format("{}:{}: \"{}\" is not a pair of numbers x_m,y_m (metres)", source,
-                                           lineno, t));
+      const std::string field = trim(parse_decimal(a, x) ? b : a);
+      throw InputError(source, fmt::format("{}:{}: \"{}\" is not a pair of numbers x_m,y_m (metres): \"{}\" is {}; "
+                                           "allowed decimal numbers such as 0.075 or 7.5e-2",
+                                           source, lineno, printable(t), printable(field), not_decimal(field)));
     }
     header_allowed = false;
-    if (!std::isfinite(x) || !std::isfinite(y))
-      throw InputError(source, fmt::format("{}:{}: non-finite value in \"{}\"", source, lineno, t));
     p.points.emplace_back(x, y);
     p.lines.push_back(lineno);
   }
@@ -144,11 +153,38 @@ void validate_measured_profile(const MeasuredProfile& p, double R, int segments)
     throw InputError(p.source, fmt::format("{}: {} lies on the segment edge as well as {}: a radial step on "
                                            "the edge is not allowed; move it at least 1 mm into the segment",
                                            p.source, pts[1].x() <= tol ? pt(1) : pt(n - 2), pts[1].x() <= tol ? pt(0) : pt(n - 1)));
+  // detail finer than kMinProfileDetailM (a point repeated, a needle): checked
+  // before the crossings, which a repeated point would be reported as
+  const double d_min = kMinProfileDetailM;
+  for (size_t i = 0; i + 1 < n; ++i) {
+    const double d = (pts[i + 1] - pts[i]).norm();
+    if (d < d_min)
+      throw InputError(p.source, fmt::format("{}: {} is {:.3g} mm from {}: consecutive points closer than {} mm are "
+                                             "finer than any measurement of a liner; allowed at least {} mm apart "
+                                             "(leave one of them out)",
+                                             p.source, pt(i + 1), d * 1e3, pt(i), d_min * 1e3, d_min * 1e3));
+  }
   const auto [a, b] = first_self_crossing(pts);
   if (a >= 0)
     throw InputError(p.source, fmt::format("{}: the profile crosses itself: the stretch from {} to {} crosses the one "
                                            "from {} to {}",
                                            p.source, pt(a), pt(a + 1), pt(b), pt(b + 1)));
+  for (size_t j = 0; j + 1 < n; ++j) {
+    const Eigen::Array2d lo = pts[j].cwiseMin(pts[j + 1]).array() - d_min;
+    const Eigen::Array2d hi = pts[j].cwiseMax(pts[j + 1]).array() + d_min;
+    const V e = pts[j + 1] - pts[j];
+    for (size_t i = 0; i < n; ++i) {
+      if (i == j || i == j + 1 || (pts[i].array() < lo).any() || (pts[i].array() > hi).any()) continue;
+      const double t = std::clamp((pts[i] - pts[j]).dot(e) / e.squaredNorm(), 0.0, 1.0);
+      const double d = (pts[j] + t * e - pts[i]).norm();
+      if (d < d_min)
+        throw InputError(p.source, fmt::format("{}: {} is {:.3g} mm from the stretch from {} to {}: a needle or a fold "
+                                               "of the profile thinner than {} mm is finer than any measurement of a "
+                                               "liner; allowed at least {} mm between a point and the stretches it "
+                                               "does not end",
+                                               p.source, pt(i), d * 1e3, pt(j), pt(j + 1), d_min * 1e3, d_min * 1e3));
+    }
+  }
 }
 
 std::vector<V> measured_profile_to_segment(const MeasuredProfile& p, double R, int segments, double h) {

@@ -22,10 +22,21 @@ MeasuredProfile load_profile_csv(const std::string& path);
 /// Parses profile CSV text (the same rules); `source` names it in messages.
 MeasuredProfile parse_profile_csv(const std::string& text, const std::string& source);
 
+/// [m] The finest detail a profile may have: 0.01 mm, a hundredth of the
+/// finest surface element ([liner] element_size_m >= 1 mm) and far below what
+/// a scan of a liner resolves (about a millimetre). Consecutive points closer
+/// than this, or a point closer than this to a stretch of the profile it does
+/// not end (a needle or a fold thinner than this), are not a measurement:
+/// before, a needle 0.2 um wide was meshed as it was and moved the bundled
+/// mill's relining date by 20 days.
+constexpr double kMinProfileDetailM = 1e-5;
+
 /// Checks that the profile fits the mill: x runs from 0 to the segment width
 /// pi D / segments (within 1 mm), stays in [0, width], every y is inside the
 /// shell (0 < y < R / 2), both ends have the same thickness (within 1 mm, the
-/// profile repeats round the ring), and the polyline does not cross itself.
+/// profile repeats round the ring), consecutive points are at least
+/// kMinProfileDetailM apart, the polyline does not cross itself, and no point
+/// comes closer than kMinProfileDetailM to a stretch it does not end.
 /// Throws InputError naming the file.
 void validate_measured_profile(const MeasuredProfile& p, double shell_radius_m, int segments);
 

@@ -8,9 +8,14 @@ the charts. Every PNG is written under a temporary name and renamed, so a
 crash never leaves a half-written picture. Needs Debian's python3-matplotlib
 and python3-h5py (run with /usr/bin/python3).
 
+Before drawing, the datasets the module's finite_datasets(h5) names are read
+whole: a NaN or an infinite value there (a damaged file) draws nothing.
+
 Exit codes: 0 charts drawn; 3 the results file lacks a group, dataset or
-attribute its kind has (damaged or not written by linerlife); 2 usage or an
-unknown kind; anything else (1: a missing package) the environment.
+attribute its kind has (damaged or not written by linerlife); 4 a dataset it
+draws holds a value that is not a finite number: one line on the standard
+output, "DATASET: what is wrong", for `linerlife plot` to name it; 2 usage or
+an unknown kind; anything else (1: a missing package) the environment.
 """
 import importlib
 import os
@@ -34,12 +39,18 @@ def main(argv):
         return 2
     import h5py
 
+    from plot_common import NotFinite, check_finite
+
     with h5py.File(results, "r") as h5:
         try:
+            check_finite(h5, module.finite_datasets(h5) if hasattr(module, "finite_datasets") else [])
             module.draw(h5, out)
         except KeyError as e:  # h5py: a missing object or attribute
             print(f"linerlife_plot: {results} is damaged or incomplete for a {kind} results file: {e}", file=sys.stderr)
             return 3
+        except NotFinite as e:  # nothing drawn yet
+            print(e, flush=True)
+            return 4
     return 0
 
 

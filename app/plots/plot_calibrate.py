@@ -5,6 +5,12 @@ import numpy as np
 from plot_common import lifter_frame, save
 
 
+def finite_datasets(h5):
+    """The datasets drawn that must hold finite numbers (linerlife_plot.py checks them before drawing)."""
+    g = h5["/calibrate"] if "/calibrate" in h5 else {}
+    return [f"/calibrate/{k}/{d}" for k in g if k.startswith("profile_") for d in ("measured", "fitted")]
+
+
 def draw(h5, out):
     R = float(h5["/surface"].attrs["shell_radius_m"])
     g = h5["/calibrate"]

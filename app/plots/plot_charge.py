@@ -6,7 +6,7 @@ import numpy as np
 from matplotlib.patches import Circle, Wedge
 from matplotlib.collections import PatchCollection
 
-from plot_common import save, surface
+from plot_common import save, surface, surface_datasets
 
 
 def _attr(g, name, default=np.nan):
@@ -18,6 +18,12 @@ def _mark_angle(ax, R, deg, label, color):
     ax.plot([0, R * np.cos(t)], [0, R * np.sin(t)], "--", color=color, lw=1.2)
     ax.annotate(f"{label} {deg:.1f}°", (1.04 * R * np.cos(t), 1.04 * R * np.sin(t)), color=color, fontsize=9,
                 ha="center", va="center", fontweight="bold")
+
+
+def finite_datasets(h5):
+    """The datasets drawn that must hold finite numbers (linerlife_plot.py checks them before drawing); the
+    snapshot positions are NaN where a frame has fewer elements."""
+    return surface_datasets("/surface") + ["/snapshots/liner_angle_rad"]
 
 
 def draw(h5, out):

@@ -4,6 +4,36 @@ import os
 import numpy as np
 
 
+class NotFinite(Exception):
+    """A dataset the charts draw holds a NaN or an infinite value: the file is damaged."""
+
+    def __init__(self, path, detail):
+        super().__init__(f"{path}: {detail}")
+        self.path, self.detail = path, detail
+
+
+def check_finite(h5, paths):
+    """Raises NotFinite for the first of the datasets `paths` that holds a value that is not a finite number.
+    Datasets the file lacks are left to draw(), whose KeyError names them."""
+    for path in paths:
+        if path not in h5:
+            continue
+        v = np.asarray(h5[path][()])
+        if v.dtype.kind not in "fc":  # integers and strings are always finite
+            continue
+        bad = ~np.isfinite(v)
+        if bad.any():
+            first = tuple(int(i) for i in np.argwhere(bad)[0])
+            where = ", ".join(str(i) for i in first)
+            raise NotFinite(path, f"{int(bad.sum())} of {v.size} values are not finite numbers (the first, "
+                                  f"{v[first]}, at [{where}])")
+
+
+def surface_datasets(group):
+    """The datasets of a liner surface group the charts draw (the nodes)."""
+    return [f"{group}/nodes"]
+
+
 def save(fig, out_dir, name):
     """Saves fig as out_dir/name atomically (temporary file, then rename)."""
     final = os.path.join(out_dir, name)

@@ -20,6 +20,11 @@ def vary_keys(labels):
     return keys
 
 
+def finite_datasets(h5):
+    """The datasets drawn that must hold finite numbers (linerlife_plot.py checks them before drawing)."""
+    return ["/cases/operating_hours"]
+
+
 def draw(h5, out):
     c = h5["/cases"]
     labels = c.attrs["labels"].split("\n")

@@ -7,6 +7,13 @@ import numpy as np
 from plot_common import lifter_frame, save
 
 
+def finite_datasets(h5):
+    """The datasets drawn that must hold finite numbers (linerlife_plot.py checks them before drawing). The other
+    history columns may be NaN (a face angle where the liner has no lifter, a power the model does not give)."""
+    return ["/forecast/profiles/nodes", "/forecast/profiles/hours", "/forecast/history/hours",
+            "/forecast/history/min_thickness_m", "/forecast/history/liner_mass_kg_per_m"]
+
+
 def draw(h5, out):
     f = h5["/forecast"]
     R = float(h5["/surface"].attrs["shell_radius_m"])

@@ -4,7 +4,12 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.patches import Rectangle
 
-from plot_common import lifter_frame, save, segment_chain, surface
+from plot_common import lifter_frame, save, segment_chain, surface, surface_datasets
+
+
+def finite_datasets(h5):
+    """The datasets drawn that must hold finite numbers (linerlife_plot.py checks them before drawing)."""
+    return surface_datasets("/surface") + ["/lifter_grid/fraction"]
 
 
 def draw(h5, out):

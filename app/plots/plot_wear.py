@@ -10,7 +10,7 @@ import json
 import matplotlib.pyplot as plt
 import numpy as np
 
-from plot_common import save, segment_chain, surface
+from plot_common import save, segment_chain, surface, surface_datasets
 
 
 def bottom_frame(chain, centre):
@@ -35,6 +35,19 @@ def shell(ax, R, segments):
 def summary(h5):
     v = h5["/wear/summary_json"][()]
     return json.loads(v.decode() if isinstance(v, bytes) else v)
+
+
+def finite_datasets(h5):
+    """The datasets drawn that must hold finite numbers (linerlife_plot.py checks them before drawing)."""
+    groups = ["/surface_initial", "/surface_final", "/companions/abrasion_only", "/companions/impact_only",
+              "/rates/surface"]
+    if "/snapshots/time_s" in h5:
+        groups += [f"/snapshots/{i}" for i in range(len(h5["/snapshots/time_s"]))]
+    paths = [p for g in groups for p in surface_datasets(g)]
+    paths += ["/snapshots/time_s", "/history/time_s", "/history/per_segment_kg_per_m", "/history/centrifugal_kg_per_m",
+              "/history/gravitational_kg_per_m", "/history/impact_kg_per_m", "/rates/centrifugal_m_s",
+              "/rates/gravitational_m_s", "/rates/impact_m_s"]
+    return paths
 
 
 def draw(h5, out):

@@ -268,6 +268,11 @@ TEST_CASE("measured profile files given to calibrate exit 2 naming the file, lin
                                      "500,0,0.075\n500,0.25,0.3\n500,0.508618,0.075\n");
   write_file(dir / "negative.csv", head + "-5,0,0.075\n-5,0.25,0.3\n-5,0.508618,0.075\n");
   write_file(dir / "two.csv", head + "1000,0,0.075\n1000,0.25,0.3\n");
+  // a review: hexadecimal numbers were taken, binary bytes quoted raw, a needle 0.1 um across accepted
+  write_file(dir / "hex.csv", head + "1000,0,0.075\n1000,0.25,0x1p-3\n1000,0.508618,0.075\n");
+  write_file(dir / "binary.csv", head + "1000,0,0.075\n1000,0.25,0.1" + std::string(1, '\0') + "\x07\xfe\n");
+  write_file(dir / "spike.csv", head + "1000,0,0.075\n1000,0.2,0.075\n1000,0.20000005,0.0750001\n"
+                                       "1000,0.2000001,0.075\n1000,0.508618,0.075\n");
   const std::vector<Refusal> cases = {
       {"empty.csv", {"empty.csv: no measured profile in the file"}},
       {"header.csv", {"header.csv: no measured profile in the file"}},
@@ -281,6 +286,11 @@ TEST_CASE("measured profile files given to calibrate exit 2 naming the file, lin
       {"unsorted.csv", {"unsorted.csv:5: hours = 500 after a profile at 1000 h", "increasing hours"}},
       {"negative.csv", {"negative.csv:2: hours = -5", "must be >= 0"}},
       {"two.csv", {"two.csv:2:", "has 2 points; at least 3"}},
+      {"hex.csv", {"hex.csv:3: expected three numbers \"hours,x_m,y_m\", got \"1000,0.25,0x1p-3\"; allowed decimal "
+                   "numbers"}},
+      {"binary.csv", {"binary.csv:3: expected three numbers \"hours,x_m,y_m\", got \"1000,0.25,0.1\\x00\\x07\\xFE\""}},
+      {"spike.csv", {"spike.csv:2 (profile at 1000 h): point 3 (line 4) is 0.000112 mm from point 2 (line 3): "
+                     "consecutive points closer than 0.01 mm", "allowed at least 0.01 mm apart"}},
       {"missing.csv", {"measured profile file", "missing.csv does not exist"}},
   };
   for (const Refusal& c : cases)
@@ -348,6 +358,24 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Contains("unknown command \"frobnicate\""));
   CHECK_THAT(r.err, Catch::Contains("forecast"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("an empty --out is refused by every command that takes one", "[app][cli][input]") {
+  // a review: `--out ""` was taken for no --out; the run exited 0, printed
+  // its results and wrote no file
+  const fs::path dir = temp_dir("empty_out");
+  write_file(dir / "r.h5", "");
+  const std::vector<std::string> commands = {"geometry", "charge",    "wear", "forecast --quiet",
+                                             "compare",  "calibrate", "plot " + (dir / "r.h5").string()};
+  for (const std::string& cmd : commands) {
+    const RunResult r = run_linerlife(cmd + " --out ''", 30);  // before: a whole run of the bundled mill
+    INFO(cmd << "\n" << r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::StartsWith("linerlife: error: --out: an empty folder name (--out \"\"); allowed the "
+                                        "path of a folder to write into, e.g. --out results ("));
+    CHECK(r.out.empty());  // refused by the parser, before any work
+  }
   fs::remove_all(dir);
 }
 

@@ -228,6 +228,8 @@ TEST_CASE("every refusal exits 2 with its message and writes nothing", "[app][cl
   write_file(dir / "empty.csv", "x_m,y_m\n");
   write_file(dir / "outside.csv", "0,0.075\n0.25,-0.01\n0.508618,0.075\n");
   write_file(dir / "crossing.csv", "0,0.075\n0.3,0.3\n0.1,0.3\n0.2,0.01\n0.508618,0.075\n");
+  write_file(dir / "hex.csv", "0,0.075\n0.25,0x1p-2\n0.508618,0.075\n");
+  write_file(dir / "needle.csv", "0,0.075\n0.2,0.075\n0.2000001,0.3\n0.2000002,0.075\n0.508618,0.075\n");
   const std::vector<Bad> cases = {
       {"mill", "diameter_m", "diametre_m = 10.0", "unknown key [mill] diametre_m"},
       {"mill", "diameter_m", "diameter_m = \"big\"", "expected a number"},
@@ -248,6 +250,10 @@ TEST_CASE("every refusal exits 2 with its message and writes nothing", "[app][cl
       {"liner", "profile_csv", "profile_csv = \"" + (dir / "empty.csv").string() + "\"", "at least 3 points"},
       {"liner", "profile_csv", "profile_csv = \"" + (dir / "outside.csv").string() + "\"", "inside the shell"},
       {"liner", "profile_csv", "profile_csv = \"" + (dir / "crossing.csv").string() + "\"", "crosses itself"},
+      {"liner", "profile_csv", "profile_csv = \"" + (dir / "hex.csv").string() + "\"",
+       "hex.csv:2: \"0.25,0x1p-2\" is not a pair of numbers x_m,y_m (metres): \"0x1p-2\" is a hexadecimal number"},
+      {"liner", "profile_csv", "profile_csv = \"" + (dir / "needle.csv").string() + "\"",
+       "needle.csv: point 4 (line 4) is 0.0002 mm from the stretch from point 1 (line 1) to point 2 (line 2): a needle"},
       {"liner", "profile_csv", "profile_csv = \"nope.csv\"", "does not exist"},
       {"model", "time_step_s", "time_step_s = -0.01", "out of range"},
       {"model", "charge", "charge = \"fem\"", "\"empirical\", \"layer\", \"dem\""},

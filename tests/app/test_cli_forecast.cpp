@@ -143,7 +143,7 @@ TEST_CASE("the layer model's power history carries a caveat when it departs from
   CHECK(worn_power_caveat("layer", h, {6000, nan, 9000, 6100}).find("+50 %") != std::string::npos);
 }
 
-TEST_CASE("forecast --out writes the results file and its charts; plot redraws them", "[app][cli][forecast][plot]") {
+TEST_CASE("forecast --out writes the results file and its charts, and plot redraws them", "[app][cli][forecast][plot]") {
   const fs::path dir = temp_dir("fc_out");
   write_file(dir / "m.toml", fast_qiu());
   const RunResult r = run_linerlife("forecast " + (dir / "m.toml").string() + " --quiet --out " + (dir / "run").string());
@@ -187,7 +187,64 @@ TEST_CASE("forecast --out writes the results file and its charts; plot redraws t
   fs::remove_all(dir);
 }
 
-TEST_CASE("forecast runs each method from the command line; euler agrees with the ODE", "[app][cli][forecast]") {
+TEST_CASE("plot refuses a results file whose drawn data hold NaN or infinite values, naming the file and dataset",
+          "[app][cli][forecast][plot][input]") {
+  // a review: a forecast.h5 whose profile nodes were NaN was drawn (blank
+  // profiles, exit 0)
+  if (!python_charts_available()) {
+    WARN("matplotlib/h5py missing for /usr/bin/python3: plot not checked");
+    return;
+  }
+  const fs::path dir = temp_dir("plot_nan");
+  write_file(dir / "m.toml", fast_qiu("max_operating_hours = 300\n"));
+  RunResult r = run_linerlife("forecast " + (dir / "m.toml").string() + " --quiet --out " + (dir / "run").string());
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  r = run_linerlife("geometry --out " + (dir / "geo").string());
+  REQUIRE(r.code == 0);
+  // each case: the file, a Python statement damaging its open h5py File `f`, the dataset named
+  struct Damage {
+    fs::path file;
+    std::string python, dataset;
+  };
+  const std::vector<Damage> cases = {
+      {dir / "run" / "forecast.h5", "v = f['/forecast/profiles/nodes']; v[3, 1] = float('nan')",
+       "/forecast/profiles/nodes: 1 of "},
+      {dir / "run" / "forecast.h5", "v = f['/forecast/profiles/nodes']; v[...] = float('nan')",
+       "/forecast/profiles/nodes: "},
+      {dir / "run" / "forecast.h5", "v = f['/forecast/history/hours']; v[1] = float('inf')",
+       "/forecast/history/hours: 1 of "},
+      {dir / "geo" / "geometry.h5", "v = f['/surface/nodes']; v[0, 0] = float('-inf')", "/surface/nodes: 1 of "},
+  };
+  for (const Damage& c : cases) {
+    INFO(c.python);
+    const fs::path bad_dir = dir / "bad", bad = bad_dir / "bad.h5";
+    fs::remove_all(bad_dir);
+    fs::create_directories(bad_dir);
+    fs::copy_file(c.file, bad);
+    const std::string py = "/usr/bin/python3 -c \"import h5py; f = h5py.File('" + bad.string() + "', 'r+'); " +
+                           c.python + "; f.close()\"";
+    REQUIRE(std::system(py.c_str()) == 0);
+    // into a new folder; the first case also beside the file
+    std::vector<std::string> outs = {" --out " + (dir / "charts" / "sub").string()};
+    if (&c == &cases.front()) outs.push_back("");
+    for (const std::string& out : outs) {
+      r = run_linerlife("plot " + bad.string() + out);
+      INFO(out << "\n" << r.err);
+      CHECK(r.code == 2);
+      CHECK_THAT(r.err, Catch::StartsWith("linerlife: error: results file " + bad.string() + " is damaged: dataset " +
+                                          c.dataset));
+      CHECK_THAT(r.err, Catch::Contains("allowed only finite numbers there"));
+      CHECK(r.out.empty());
+      CHECK_FALSE(fs::exists(dir / "charts"));  // nothing written: not even the folder
+      CHECK(std::distance(fs::directory_iterator(bad_dir), fs::directory_iterator()) == 1);  // bad.h5 alone
+    }
+  }
+  // (undamaged files draw: "forecast --out writes the results file and its charts, and plot redraws them")
+  fs::remove_all(dir);
+}
+
+TEST_CASE("forecast runs each method from the command line, and euler agrees with the ODE", "[app][cli][forecast]") {
   const fs::path dir = temp_dir("fc_methods");
   write_file(dir / "m.toml", fast_qiu());
   double life[3] = {0, 0, 0};

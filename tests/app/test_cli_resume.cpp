@@ -174,6 +174,31 @@ TEST_CASE("a forecast killed with SIGKILL at random moments and resumed ends as 
 // diagnostic, and the results up to the failure are written whole and marked
 // partial. The failure is injected at a charge drive (LINERLIFE_FAIL_AT_DRIVE,
 // app/cmd_forecast.cpp) as a charge model that blew up would throw it.
+TEST_CASE("forecast --resume without a checkpoint says so, with --quiet and --json too, and starts afresh",
+          "[app][cli][forecast][resume]") {
+  // a review: with --quiet the run started over without a word
+  const fs::path dir = temp_dir("fc_no_checkpoint");
+  const fs::path cfg = dir / "qiu.toml", out = dir / "out";
+  write_file(cfg, std::regex_replace(resumable_qiu(), std::regex("\\[forecast\\]\n"),
+                                     "[forecast]\nmax_operating_hours = 300\n"));
+  const std::string note = "linerlife: note: --resume: no checkpoint in " + out.string() + " (" +
+                           (out / "checkpoint.h5").string() + " does not exist): the forecast starts from the new liner";
+  RunResult r = run_linerlife("forecast " + cfg.string() + " --quiet --out " + out.string() + " --resume", 120);
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.err, Catch::Contains(note + "\n"));
+  CHECK_THAT(r.out, Catch::Contains("300 h from 2027-01-01"));
+  CHECK(fs::exists(out / "forecast.h5"));
+  // the folder now holds the results of a run that ended: they are replaced
+  r = run_linerlife("forecast " + cfg.string() + " --json --quiet --out " + out.string() + " --resume", 120);
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.err, Catch::Contains(note + "; the forecast.h5 there, of a run that ended, is replaced when it ends"));
+  CHECK(parse_json(r.out)["operating_hours"].num() == Approx(300));  // stdout holds the JSON alone
+  CHECK_FALSE(fs::exists(out / "checkpoint.h5"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("a forecast that fails part-way exits 3 and leaves its results marked partial", "[app][cli][forecast]") {
   const fs::path dir = temp_dir("partial");
   const fs::path cfg = dir / "qiu.toml", out = dir / "out";

@@ -49,6 +49,16 @@ TEST_CASE("bad profile files are refused naming the file and the line", "[geomet
   refuse_text("0,0.1\n0.1,abc\n0.2,0.1\n", "bad.csv:2");
   refuse_text("0 0.1\n", "two comma-separated");
   refuse_text("0,0.1\n0.1,nan\n0.2,0.1\n", "non-finite");
+  // a review: strtod's hexadecimal numbers were taken (0x1p-3 = 0.125 m), and
+  // a line with binary bytes was quoted raw (a NUL cut the message there)
+  refuse_text("0,0.1\n0.1,0x1p-3\n0.2,0.1\n", "bad.csv:2: \"0.1,0x1p-3\" is not a pair of numbers x_m,y_m (metres): "
+                                             "\"0x1p-3\" is a hexadecimal number; allowed decimal numbers");
+  refuse_text("0,0.1\n0.1,1e400\n0.2,0.1\n", "\"1e400\" is beyond the range of a double");
+  refuse_text(std::string("0,0.1\n0.1,0.0") + '\0' + "\x01\xff\n0.2,0.1\n",
+              "bad.csv:2: \"0.1,0.0\\x00\\x01\\xFF\" is not a pair of numbers x_m,y_m (metres): \"0.0\\x00\\x01\\xFF\" is "
+              "not a decimal number");
+  refuse_text(std::string("0,0.1\n\x1b[2J") + "\n", "bad.csv:2: expected two comma-separated numbers \"x_m,y_m\", got "
+                                                  "\"\\x1B[2J\"");
 
   auto refuse_profile = [](std::vector<V> pts, const std::string& words) {
     MeasuredProfile p;
@@ -91,4 +101,56 @@ TEST_CASE("bad profile files are refused naming the file and the line", "[geomet
   namespace fs = std::filesystem;
   CHECK_THROWS_WITH(load_profile_csv("/nonexistent/scan.csv"), Catch::Contains("does not exist"));
   CHECK_THROWS_WITH(load_profile_csv(fs::temp_directory_path().string()), Catch::Contains("is a directory"));
+}
+
+TEST_CASE("detail finer than 0.01 mm is refused: a repeated point, a spike, a needle", "[geometry][csv][input]") {
+  const double w = 2 * M_PI * 5.18 / 64;
+  auto profile = [&](std::vector<V> middle) {
+    MeasuredProfile p;
+    p.source = "scan.csv";
+    p.points = {{0, 0.075}, {0.1, 0.075}};
+    p.points.insert(p.points.end(), middle.begin(), middle.end());
+    for (const V& q : std::vector<V>{{0.3, 0.075}, {0.4, 0.075}, {w, 0.075}}) p.points.push_back(q);
+    return p;
+  };
+  auto refused = [&](std::vector<V> middle, const std::string& words) {
+    try {
+      validate_measured_profile(profile(middle), 5.18, 64);
+      FAIL("accepted: " << words);
+    } catch (const InputError& e) {
+      CHECK_THAT(e.what(), Catch::Contains(words));
+    }
+  };
+  // a review: a point jutting out 0.1 um, a needle, was accepted; a needle
+  // 0.2 um wide moved the bundled mill's relining date by 20 days
+  refused({{0.2, 0.075}, {0.20000005, 0.0750001}, {0.2000001, 0.075}},
+          "point 4 is 0.000112 mm from point 3: consecutive points closer than 0.01 mm are finer than any "
+          "measurement of a liner; allowed at least 0.01 mm apart");
+  refused({{0.2, 0.075}, {0.2000001, 0.3}, {0.2000002, 0.075}},
+          "point 5 is 0.0002 mm from the stretch from point 2 to point 3: a needle or a fold of the profile thinner "
+          "than 0.01 mm");
+  // a point given twice: before, reported as a crossing of the stretches beside it
+  refused({{0.2, 0.075}, {0.25, 0.3}, {0.25, 0.3}}, "point 5 is 0 mm from point 4");
+  refused({{0.2, 0.075}, {0.25, 0.3}, {0.2500099, 0.3}}, "point 5 is 0.0099 mm from point 4");
+  // ... 0.011 mm apart, a step of 0.02 mm, and a lifter worn to a tip of 2 degrees are taken
+  for (const std::vector<V>& ok :
+       std::vector<std::vector<V>>{{{0.2, 0.075}, {0.25, 0.3}, {0.250011, 0.3}},
+                                   {{0.2, 0.075}, {0.2, 0.07502}, {0.25, 0.07502}, {0.25, 0.075}},
+                                   {{0.2, 0.075}, {0.2039, 0.3}, {0.2078, 0.075}}}) {
+    INFO(ok[1].x() << ", " << ok[1].y());
+    CHECK_NOTHROW(validate_measured_profile(profile(ok), 5.18, 64));
+  }
+  // read from a file, the points are named by their lines
+  try {
+    validate_measured_profile(parse_profile_csv("x_m,y_m\n0,0.075\n0.2,0.075\n0.2,0.075\n" +
+                                                    fmt::format("{:.6f}", w) + ",0.075\n", "scan.csv"),
+                              5.18, 64);
+    FAIL("a repeated point accepted");
+  } catch (const InputError& e) {
+    CHECK_THAT(e.what(), Catch::StartsWith("scan.csv: point 3 (line 4) is 0 mm from point 2 (line 3)"));
+  }
+  // a lifter worn by a forecast, as measured (tests/charge/data)
+  const MeasuredProfile worn =
+      load_profile_csv(std::string(LINERLIFE_SOURCE_DIR) + "/tests/charge/data/qiu_worn_4400h.csv");
+  CHECK_NOTHROW(validate_measured_profile(worn, 5.18, 64));
 }

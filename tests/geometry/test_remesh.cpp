@@ -192,7 +192,7 @@ TEST_CASE("a lifter top cut loose by face wear is counted as removed", "[geometr
   CHECK(segment_metrics(r.surface, 0, Rotation::Ccw, 7800).lifter_height_m < 0.14);
 }
 
-TEST_CASE("zero depth leaves the surface as it is; bad depths are programming errors", "[geometry][remesh]") {
+TEST_CASE("zero depth leaves the surface as it is, and bad depths are programming errors", "[geometry][remesh]") {
   const LinerSurface s = build_liner_surface(pilot_mill(), pilot_liner());
   const RemeshResult r = remesh(s, std::vector<double>(s.n_nodes(), 0.0), RemeshOptions{0.002});
   REQUIRE(r.surface.n_nodes() == s.n_nodes());

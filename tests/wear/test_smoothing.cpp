@@ -81,7 +81,7 @@ TEST_CASE("csaps on a periodic uniform grid is the spline's Fourier filter", "[w
   }
 }
 
-TEST_CASE("csaps keeps the weighted mass, lines and constants; p = 1 interpolates", "[wear][smoothing][csaps]") {
+TEST_CASE("csaps keeps the weighted mass, lines and constants, and p = 1 interpolates", "[wear][smoothing][csaps]") {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(0, 1);
   const int n = 40;
