@@ -22,8 +22,6 @@ std::string trim(const std::string& s) {
   return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
 }
 
-bool number(const std::string& s, double& v) { return parse_decimal(s, v); }
-
 }  // namespace
 
 MeasuredHistory parse_measured_history(const std::string& text, const std::string& source) {
@@ -47,7 +45,7 @@ MeasuredHistory parse_measured_history(const std::string& text, const std::strin
     }
     header_allowed = false;
     double hr = 0, x = 0, y = 0;
-    if (f.size() != 3 || !number(f[0], hr) || !number(f[1], x) || !number(f[2], y))
+    if (f.size() != 3 || !parse_decimal(f[0], hr) || !parse_decimal(f[1], x) || !parse_decimal(f[2], y))
       throw InputError(source, fmt::format("{}:{}: expected three numbers \"hours,x_m,y_m\", got \"{}\"; allowed "
                                            "decimal numbers such as 1000, 0.25 or 7.5e-2",
                                            source, lineno, printable(t)));

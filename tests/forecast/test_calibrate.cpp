@@ -106,10 +106,9 @@ CalibrationProblem two_factor_problem(const LinerSurface& s) {
   return p;
 }
 
-}  // namespace
-
-TEST_CASE("calibrate recovers a known wear coefficient from synthetic profiles", "[forecast][calibrate]") {
-  const LinerSurface s = build_liner_surface(qiu(), liner());
+/// The one-factor fit (both parts of TwoPartRates scaled by k) on surface s,
+/// without its scans.
+CalibrationProblem one_factor_problem(const LinerSurface& s) {
   CalibrationProblem p;
   p.names = {"k"};
   p.initial = {1.0};
@@ -117,6 +116,14 @@ TEST_CASE("calibrate recovers a known wear coefficient from synthetic profiles",
   p.input.initial = &s;
   p.spec = spec();
   p.segments = 64;
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("calibrate recovers a known wear coefficient from synthetic profiles", "[forecast][calibrate]") {
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  CalibrationProblem p = one_factor_problem(s);
   p.measured = scans(s, 1.3, 1.3, {1500, 3000, 4500});
   const CalibrationResult r = calibrate(p);
   INFO("fitted k = " << r.params[0] << ", rms " << r.rms_m << " m from " << r.rms_initial_m << " m, " << r.forecasts
@@ -155,13 +162,7 @@ TEST_CASE("profile residuals are signed by the pseudo-normal at a spike's tip", 
 // scan, and a fit whose forecast ends before a scan is refused.
 TEST_CASE("calibrate fits a scan dated past the starting factors' life", "[forecast][calibrate]") {
   const LinerSurface s = build_liner_surface(qiu(), liner());
-  CalibrationProblem p;
-  p.names = {"k"};
-  p.initial = {1.0};
-  p.make_provider = [](const std::vector<double>& k) { return std::make_unique<TwoPartRates>(k[0], k[0]); };
-  p.input.initial = &s;
-  p.spec = spec();
-  p.segments = 64;
+  CalibrationProblem p = one_factor_problem(s);
   p.measured = scans(s, 1.3, 1.3, {4500});
   // the rates do not depend on time, so a factor scales time: the profile of
   // factor 1.3 at 4,500 h is that of factor 1.3 * 4,500 / 40,000 at 40,000 h
