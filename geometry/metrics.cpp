@@ -74,7 +74,9 @@ struct FaceFit {
 /// Fits the face on side `step` from the crest (+1 towards +theta) over the
 /// thickness band [lo, hi] by a length-weighted total least squares line. The
 /// angle is measured from the radial through the fit's centroid, positive when
-/// the face leans away from the lifter towards the plate. The band's ends are
+/// the face leans away from the lifter towards the plate (0 radial, 90 flat on
+/// the shell, beyond 90 a face worn into a ledge that rises away from the
+/// crest; negative undercut). The band's ends are
 /// found from the plate inwards (flank_crossing(): a grooved top does not
 /// count as the face); where the plate itself is as thick as the band's end,
 /// from the crest outwards (first_crossing()).
@@ -108,7 +110,13 @@ FaceFit fit_face(const std::vector<V>& p, const std::vector<double>& t, int cres
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(cov);
   V d = es.eigenvectors().col(1);  // largest eigenvalue
   const V er = c.normalized();
-  if (d.dot(er) < 0) d = -d;
+  // Oriented like the band's chord, from its upper end to its lower one (to
+  // the plate), not by the sign of its radial part: a face worn almost flat
+  // has a fitted line nearly tangential, whose radial part changes sign as it
+  // tilts through 90 deg, and the reading jumped from +90 to -90 deg there
+  // (docs/validation/forecast.md, the explicit step at A = 1e6). Where the
+  // radial part is not small both orientations agree.
+  if (d.dot(plo - phi) < 0) d = -d;
   const V et = step * V(-er.y(), er.x());  // away from the crest
   f.ok = true;
   f.centroid = c;

@@ -140,3 +140,78 @@ TEST_CASE("metrics of a worn profile change by under 1 % when the element size i
   // and the wear did something measurable
   CHECK(a.lifter_height_m < 0.25 - 0.02);
 }
+
+namespace {
+
+/// Segment 0 of a Qiu-sized ring (R = 5.18 m, 64 segments) whose lifter has
+/// an ordinary 20 deg-ish trailing flank and, on the leading side, a
+/// shelf: the crest drops 0.05 m, then the thickness changes linearly by
+/// `rise` over `shelf` metres of arc away from the crest before the flank
+/// falls steeply to the 0.075 m plate. Thickness is given against the arc
+/// length s at the shell radius from the segment's centre.
+LinerSurface shelf_ring(double H, double drop, double shelf, double rise) {
+  const double R = 5.18, P = 0.075, top = P + H;
+  const int S = 64;
+  const double half = R * M_PI / S;
+  const double s1 = 0.04, s2 = s1 + 0.005, s3 = s2 + shelf, s4 = s3 + 0.01;
+  const double t_shelf = top - drop;
+  auto thickness = [&](double s) {
+    if (s < -s1) return std::max(P, top - (-s1 - s) * (top - P) / 0.09);
+    if (s <= s1) return top;
+    if (s <= s2) return top + (s - s1) / (s2 - s1) * (t_shelf - top);
+    if (s <= s3) return t_shelf + (s - s2) / shelf * rise;
+    if (s <= s4) return t_shelf + rise + (s - s3) / (s4 - s3) * (P - t_shelf - rise);
+    return P;
+  };
+  std::vector<V> prof;
+  const int n = 2000;
+  for (int i = 0; i <= n; ++i) {
+    const double s = -half + 2.0 * half * i / n, th = s / R, r = R - thickness(s);
+    prof.push_back(r * V(std::cos(th), std::sin(th)));
+  }
+  return assemble_ring(R, S, {prof}, std::vector<int>(S, 0));
+}
+
+}  // namespace
+
+TEST_CASE("a face worn almost flat reads near +90 deg whichever way its fitted line tilts", "[geometry][metrics]") {
+  // A lifter worn down to 30 mm whose leading side is a ledge 0.17 m long in
+  // the middle of the face-fit band: as the ledge tilts from level to rising
+  // away from the crest (by up to 40 % of the height), the fitted line turns
+  // through the tangential, from about 89 to 92 deg. The reading must turn
+  // with it, continuously: it jumped from +90.0 to -89.9 deg where the line's
+  // radial part changed sign, so a face-angle criterion of 60 deg saw a face
+  // flat on the shell as undercut (docs/validation/forecast.md).
+  const double H = 0.03;
+  double prev = 0;
+  int beyond_90 = 0;
+  for (int i = 0; i <= 40; ++i) {
+    const double rise = 0.01 * H * i;
+    const LinerSurface s = shelf_ring(H, 0.65 * H, 0.17, rise);
+    const SegmentMetrics m = segment_metrics(s, 0, Rotation::Ccw, 7800);
+    INFO("ledge rise " << rise << " m: leading face " << m.face_angle_leading_deg << " deg");
+    REQUIRE(m.has_lifter);
+    CHECK(m.lifter_height_m == Approx(H).margin(1e-9));
+    CHECK(m.face_angle_leading_deg > 85.0);
+    CHECK(m.face_angle_leading_deg < 95.0);
+    if (i > 0) {
+      // the line turns a little with each 0.3 mm of rise, always the same way
+      CHECK(m.face_angle_leading_deg > prev);
+      CHECK(m.face_angle_leading_deg < prev + 0.5);
+    }
+    prev = m.face_angle_leading_deg;
+    beyond_90 += m.face_angle_leading_deg > 90.0;
+    // the other flank, 30 mm over 90 mm of arc, is untouched: atan(3) = 71.6 deg
+    CHECK(m.face_angle_trailing_deg == Approx(71.6).margin(1.0));
+    // a clockwise mill leads with the same face of the mirrored profile
+    std::vector<V> mirrored;
+    const std::vector<V> own(s.nodes.begin() + s.segment_begin[0], s.nodes.begin() + s.segment_begin[1] + 1);
+    for (auto it = own.rbegin(); it != own.rend(); ++it) mirrored.push_back(V(it->x(), -it->y()));
+    const LinerSurface sm = assemble_ring(s.shell_radius_m, s.segments, {mirrored}, std::vector<int>(s.segments, 0));
+    CHECK(segment_metrics(sm, 0, Rotation::Cw, 7800).face_angle_leading_deg ==
+          Approx(m.face_angle_leading_deg).margin(1e-6));
+  }
+  // the sweep does cross the tangential (else it tests nothing)
+  CHECK(beyond_90 > 5);
+  CHECK(beyond_90 < 41);
+}
