@@ -1276,7 +1276,11 @@ void LayerSim::check_flights(double t1) {
   events_.clear();
   step_t1_ = t1;
   for (int i = 0; i < static_cast<int>(dep_events_.size()); ++i) push_event({dep_events_[i].t, kDepart, i});
-  for (int i = 0; i < static_cast<int>(flights_.size()); ++i) schedule_flight(i);
+  // (most flights have nothing to do in a step: the test first, inline)
+  for (int i = 0; i < static_cast<int>(flights_.size()); ++i) {
+    const Flight& f = flights_[i];
+    if (f.landed ? f.landing.t <= t1 : next_check(f) < t1) schedule_flight(i);
+  }
   in_step_ = true;
   gone_.clear();
   while (!events_.empty()) {
