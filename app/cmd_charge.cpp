@@ -15,6 +15,7 @@
 #include "app/plots.h"
 #include "app/results.h"
 #include "charge/charge_model.h"
+#include "charge/morrell_c_model.h"
 #include "geometry/build_liner_surface.h"
 #include "geometry/errors.h"
 
@@ -214,8 +215,13 @@ int run_charge(const ChargeOptions& o) {
                              fmt_or_na(I.toe_deg, "{:.1f}"), fmt_or_na(I.shoulder_deg, "{:.1f}"));
     std::cout << fmt::format("  centre of mass           {:>9} deg at {} m\n", fmt_or_na(I.com_angle_deg, "{:.1f}"),
                              fmt_or_na(I.com_radius_m, "{:.3f}"));
-    std::cout << fmt::format("  power, net / gross       {:>9.1f} / {:.1f} kW for {} m (no-load {:.1f} kW)\n",
-                             I.net_power_kw, I.gross_power_kw, c.mill.length_m, I.no_load_power_kw);
+    // Morrell's gross carries his lumped factor k on the net (docs/models/empirical.md); the
+    // layer model's and the DEM's gross is no-load + net (docs/models/indicators.md)
+    std::cout << fmt::format("  power, net / gross       {:>9.1f} / {:.1f} kW for {} m (no-load {:.1f} kW{})\n",
+                             I.net_power_kw, I.gross_power_kw, c.mill.length_m, I.no_load_power_kw,
+                             r.model == "empirical" ? fmt::format("; gross = no-load + k x net, Morrell's k = {}",
+                                                                  MorrellInput{}.k_calibration)
+                                                    : "");
     std::cout << fmt::format("  {:<24} {:>9.1f} kW\n",
                              layer ? "energy-rate net power" : "Hogg-Fuerstenau net", I.alt_net_power_kw);
     std::cout << fmt::format("  layers / trajectories    {:>9} / {}\n", I.n_layers,

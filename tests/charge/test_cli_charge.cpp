@@ -82,6 +82,28 @@ TEST_CASE("charge --model empirical --variant and the clockwise pilot mill", "[c
   CHECK(json_number(r.out, "shoulder_deg") < 180);
 }
 
+TEST_CASE("charge's summary says how each model's gross power is made up", "[charge][cli]") {
+  // Morrell's gross carries his k = 1.26 on the net (docs/models/empirical.md);
+  // the layer model's is no-load + net (docs/models/indicators.md): the same
+  // line must not read as the same definition for both
+  const std::regex line("power, net / gross +([0-9.]+) / ([0-9.]+) kW for [0-9.]+ m \\(no-load ([0-9.]+) kW([^)]*)\\)");
+  for (const std::string model : {"empirical", "layer"}) {
+    const RunResult r = run_linerlife("charge --model " + model + " --revolutions 1");
+    REQUIRE(r.code == 0);
+    std::smatch m;
+    INFO(r.out);
+    REQUIRE(std::regex_search(r.out, m, line));
+    const double net = std::stod(m[1]), gross = std::stod(m[2]), no_load = std::stod(m[3]);
+    if (model == "empirical") {
+      CHECK(m[4].str() == "; gross = no-load + k x net, Morrell's k = 1.26");
+      CHECK(gross == Approx(no_load + 1.26 * net).margin(0.15));  // printed to 0.1 kW
+    } else {
+      CHECK(m[4].str().empty());
+      CHECK(gross == Approx(no_load + net).margin(0.15));
+    }
+  }
+}
+
 TEST_CASE("charge --out writes the results file and the charts", "[charge][cli]") {
   const fs::path dir = temp_dir("charge_out");
   const RunResult r = run_linerlife("charge --revolutions 1 --out " + (dir / "run").string());
