@@ -143,12 +143,13 @@ TEST_CASE("metrics of a worn profile change by under 1 % when the element size i
 
 namespace {
 
-/// Segment 0 of a Qiu-sized ring (R = 5.18 m, 64 segments) whose lifter has
-/// an ordinary 20 deg-ish trailing flank and, on the leading side, a
-/// shelf: the crest drops 0.05 m, then the thickness changes linearly by
-/// `rise` over `shelf` metres of arc away from the crest before the flank
-/// falls steeply to the 0.075 m plate. Thickness is given against the arc
-/// length s at the shell radius from the segment's centre.
+/// Segment 0 of a Qiu-sized ring (R = 5.18 m, 64 segments, 0.075 m plate)
+/// whose lifter, H high with an 0.08 m top, falls to the plate over 0.09 m of
+/// arc on its trailing side and, on its leading side, has a shelf: the crest
+/// drops by `drop`, then the thickness changes linearly by `rise` over `shelf`
+/// metres of arc away from the crest before the flank falls steeply to the
+/// plate. Thickness is given against the arc length s at the shell radius from
+/// the segment's centre.
 LinerSurface shelf_ring(double H, double drop, double shelf, double rise) {
   const double R = 5.18, P = 0.075, top = P + H;
   const int S = 64;
