@@ -4,10 +4,12 @@
 // (docs/models/indicators.md), the power and the run statistics. --out writes
 // charge.h5 (docs/output.md) and the charts.
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <optional>
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include "app/commands.h"
 #include "app/json.h"
@@ -158,11 +160,32 @@ int run_charge(const ChargeOptions& o) {
   in.surface = &s;
   in.revolutions = o.revolutions.value_or(0.0);
   in.record_snapshot = !o.out.empty();
+  // The DEM runs for tens of seconds: its progress on stderr when that is a
+  // terminal (the models that end in milliseconds report none), the line
+  // cleared when the run ends, also by an error
+  int shown = -1;  // the percentage on the line; -1: none drawn
+  if (!o.json && isatty(STDERR_FILENO))
+    in.progress = [&shown, &entry](double f) {
+      const int pct = static_cast<int>(100 * f);
+      if (pct == shown) return;
+      shown = pct;
+      std::fprintf(stderr, "\r  charge (%s): %3d %% of the run", entry.name, pct);
+      std::fflush(stderr);
+    };
+  struct ClearLine {
+    const int& shown;
+    ~ClearLine() {
+      if (shown >= 0) std::fprintf(stderr, "\r%40s\r", "");
+    }
+  };
   ChargeResult r;
-  try {
-    r = entry.make()->run(in);
-  } catch (const InputError& e) {
-    rethrow_located(c, e);  // refused inside the model (the DEM's step): the key's line
+  {
+    const ClearLine clear{shown};
+    try {
+      r = entry.make()->run(in);
+    } catch (const InputError& e) {
+      rethrow_located(c, e);  // refused inside the model (the DEM's step): the key's line
+    }
   }
   for (const auto& n : r.notes) note("linerlife: note: " + n);
   const Indicators& I = r.indicators;
@@ -222,8 +245,11 @@ int run_charge(const ChargeOptions& o) {
                              r.model == "empirical" ? fmt::format("; gross = no-load + k x net, Morrell's k = {}",
                                                                   MorrellInput{}.k_calibration)
                                                     : "");
-    std::cout << fmt::format("  {:<24} {:>9.1f} kW\n",
-                             layer ? "energy-rate net power" : "Hogg-Fuerstenau net", I.alt_net_power_kw);
+    // the second power figure: the layer model's energy rate, the empirical model's
+    // Hogg-Fuerstenau; the DEM has none (NaN), and the line is left out
+    if (std::isfinite(I.alt_net_power_kw))
+      std::cout << fmt::format("  {:<24} {:>9.1f} kW\n",
+                               layer ? "energy-rate net power" : "Hogg-Fuerstenau net", I.alt_net_power_kw);
     std::cout << fmt::format("  layers / trajectories    {:>9} / {}\n", I.n_layers,
                              I.n_trajectories >= 0 ? std::to_string(I.n_trajectories) : "n/a");
     std::cout << fmt::format("  charge area (en masse)   {:>9.3f} m2\n", I.charge_area_m2);

@@ -5,6 +5,7 @@
 // macros, no self-registering statics.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,6 +29,10 @@ struct ChargeInput {
   double revolutions = 0;    // mill revolutions to average over (after settling); 0: the model's default
   unsigned long long seed = 1;  // for models with random elements
   bool record_snapshot = false;  // keep element/particle positions of the last revolution for charts
+  // The share of the run done (0 < f <= 1, rising, 1 last), reported by the slow models as they go
+  // (the DEM: after each of its sampling chunks, settling included); may be empty. The layer and
+  // empirical models, done in milliseconds, do not call it.
+  std::function<void(double)> progress;
 };
 
 /// Positions of the charge at one instant, for charts and HDF5.

@@ -259,8 +259,11 @@ ChargeResult run_dem(const ChargeInput& in, DemSetup setup, DemRunInfo* info_out
   ChargeResult res;
   res.model = "dem";
   const auto t_int0 = std::chrono::steady_clock::now();
-  for (long long done = 0; done < settle_steps; done += sample_every)  // in chunks: the thread count adapts
+  const double all_steps = static_cast<double>(settle_steps + avg_steps);
+  for (long long done = 0; done < settle_steps; done += sample_every) {  // in chunks: the thread count adapts
     sys.advance(std::min(sample_every, settle_steps - done));
+    if (in.progress) in.progress(static_cast<double>(std::min(done + sample_every, settle_steps)) / all_steps);
+  }
   sys.set_accumulate(true);
   const long long pc0 = sys.pair_contact_steps(), wc0 = sys.wall_contact_steps();
   const long long last_rev_start = avg_steps - std::llround(setup.revolution_s / dt);
@@ -274,6 +277,7 @@ ChargeResult run_dem(const ChargeInput& in, DemSetup setup, DemRunInfo* info_out
     sys.advance(1);
     done += chunk;
     ++sample_no;
+    if (in.progress) in.progress(static_cast<double>(settle_steps + done) / all_steps);
     // occupancy sample
     ParticleFrame f;
     f.n = n;

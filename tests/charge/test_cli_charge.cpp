@@ -84,11 +84,15 @@ TEST_CASE("charge --model empirical --variant and the clockwise pilot mill", "[c
 
 TEST_CASE("charge's summary says how each model's gross power is made up", "[charge][cli]") {
   // Morrell's gross carries his k = 1.26 on the net (docs/models/empirical.md);
-  // the layer model's is no-load + net (docs/models/indicators.md): the same
-  // line must not read as the same definition for both
+  // the layer model's and the DEM's is no-load + net (docs/models/indicators.md):
+  // the same line must not read as the same definition for both. The second
+  // power figure is the layer model's energy rate and the empirical model's
+  // Hogg-Fuerstenau; the DEM has none (it printed "Hogg-Fuerstenau net nan kW").
   const std::regex line("power, net / gross +([0-9.]+) / ([0-9.]+) kW for [0-9.]+ m \\(no-load ([0-9.]+) kW([^)]*)\\)");
-  for (const std::string model : {"empirical", "layer"}) {
-    const RunResult r = run_linerlife("charge --model " + model + " --revolutions 1");
+  const std::string pilot = std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/pilot_test_13.toml";  // ~60 discs
+  for (const std::string model : {"empirical", "layer", "dem"}) {
+    const RunResult r =
+        run_linerlife("charge " + (model == "dem" ? pilot : std::string()) + " --model " + model + " --revolutions 1");
     REQUIRE(r.code == 0);
     std::smatch m;
     INFO(r.out);
@@ -101,6 +105,9 @@ TEST_CASE("charge's summary says how each model's gross power is made up", "[cha
       CHECK(m[4].str().empty());
       CHECK(gross == Approx(no_load + net).margin(0.15));
     }
+    CHECK((r.out.find("Hogg-Fuerstenau net") != std::string::npos) == (model == "empirical"));
+    CHECK((r.out.find("energy-rate net power") != std::string::npos) == (model == "layer"));
+    CHECK(r.out.find("nan") == std::string::npos);
   }
 }
 

@@ -1,5 +1,6 @@
 // The dem charge model on a pilot mill: indicators and loads from particle
 // data, the frame of a clockwise mill, repeatability, refusals (issue 6 §1, §3).
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -153,6 +154,30 @@ TEST_CASE("dem runs repeat exactly for a seed, on one thread or two", "[dem][mod
   const double a = run_dem(p.in).indicators.net_power_w_per_m;
   p.in.model.dem.seed = 7;
   CHECK(run_dem(p.in).indicators.net_power_w_per_m != a);
+}
+
+TEST_CASE("a dem run reports its progress, rising to 1, and the report changes nothing", "[dem][model]") {
+  // `linerlife charge --model dem` shows it on a terminal (tens of seconds on
+  // the bundled mill): one report per sampling chunk (72 a revolution),
+  // settling included
+  Pilot p;
+  p.in.model.dem.revolutions = 0.5;
+  p.in.model.dem.settle_revolutions = 0.5;
+  const ChargeResult quiet = run_dem(p.in);
+  std::vector<double> f;
+  p.in.progress = [&f](double x) { f.push_back(x); };
+  const ChargeResult told = run_dem(p.in);
+  test::check_same_run(quiet, told);
+  REQUIRE(f.size() >= 70);  // 36 + 36 chunks, up to rounding
+  CHECK(f.size() <= 74);
+  CHECK(f.front() > 0);
+  CHECK(f.front() < 0.05);
+  for (size_t i = 1; i < f.size(); ++i) CHECK(f[i] > f[i - 1]);
+  CHECK(f.back() == 1.0);
+  // half the steps are the settling's
+  const auto half = std::lower_bound(f.begin(), f.end(), 0.5 - 1e-9);
+  REQUIRE(half != f.end());
+  CHECK(*half == Approx(0.5).margin(0.02));
 }
 
 TEST_CASE("dem refuses time steps beyond the stable range and coarse-graining the mill cannot take",
