@@ -4,12 +4,10 @@
 // (docs/models/indicators.md), the power and the run statistics. --out writes
 // charge.h5 (docs/output.md) and the charts.
 #include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <optional>
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include "app/commands.h"
 #include "app/json.h"
@@ -160,33 +158,18 @@ int run_charge(const ChargeOptions& o) {
   in.surface = &s;
   in.revolutions = o.revolutions.value_or(0.0);
   in.record_snapshot = !o.out.empty();
-  // The DEM runs for tens of seconds: its progress on stderr when that is a
-  // terminal (the models that end in milliseconds report none), the line
-  // cleared when the run ends, also by an error
-  int shown = -1;  // the percentage on the line; -1: none drawn
-  if (!o.json && isatty(STDERR_FILENO))
-    in.progress = [&shown, &entry](double f) {
-      const int pct = static_cast<int>(100 * f);
-      if (pct == shown) return;
-      shown = pct;
-      std::fprintf(stderr, "\r  charge (%s): %3d %% of the run", entry.name, pct);
-      std::fflush(stderr);
-    };
-  struct ClearLine {
-    const int& shown;
-    ~ClearLine() {
-      if (shown >= 0) std::fprintf(stderr, "\r%40s\r", "");
-    }
-  };
   ChargeResult r;
   {
-    const ClearLine clear{shown};
+    // the DEM runs for tens of seconds (the models that end in milliseconds report nothing)
+    PercentLine line(fmt::format("charge ({})", entry.name), !o.json);
+    in.progress = line.callback();
     try {
       r = entry.make()->run(in);
     } catch (const InputError& e) {
       rethrow_located(c, e);  // refused inside the model (the DEM's step): the key's line
     }
   }
+  in.progress = nullptr;  // the line is gone
   for (const auto& n : r.notes) note("linerlife: note: " + n);
   const Indicators& I = r.indicators;
   const bool layer = r.model == "layer";

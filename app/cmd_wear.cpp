@@ -9,10 +9,8 @@
 // thesis Figs. 5-13, 5-16, 5-17 and B-5. For Figs. 5-16 and 5-17 the run is
 // repeated with the abrasion laws only and with the impact laws only.
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <optional>
 
@@ -86,29 +84,21 @@ int run_wear_command(const WearOptions& o) {
   in.material = c.material;
   in.wear = c.wear;
   in.remesh.element_size_m = c.liner.element_size_m;
-  const bool tty = isatty(fileno(stderr)) != 0 && !o.json;
-  int last_pct = -1;
-  if (tty)
-    in.progress = [&last_pct](double f) {
-      const int pct = static_cast<int>(f * 100);
-      if (pct != last_pct) {
-        std::fprintf(stderr, "\rwear: %3d %%", pct);
-        last_pct = pct;
-      }
-    };
   WearRunResult r;
-  try {
-    r = run_wear(in, entry);
-  } catch (const InputError& e) {
-    if (last_pct >= 0) std::fprintf(stderr, "\r            \r");  // the progress line, if one was drawn
-    rethrow_located(c, e);  // refused inside the model (the DEM's step): the key's line
+  {
+    PercentLine line("wear", !o.json);
+    in.progress = line.callback();
+    try {
+      r = run_wear(in, entry);
+    } catch (const InputError& e) {
+      rethrow_located(c, e);  // refused inside the model (the DEM's step): the key's line
+    }
   }
-  if (tty) std::fprintf(stderr, "\r            \r");
+  in.progress = nullptr;  // the line is gone
   note_drive_notes(r.notes, r.charge_drives);
 
   std::optional<WearRunResult> abrasion_only, impact_only;
   if (!o.out.empty() && has_kind(c.wear, WearKind::Abrasion) && has_kind(c.wear, WearKind::Impact)) {
-    in.progress = nullptr;
     in.wear = only(c.wear, WearKind::Abrasion);
     abrasion_only = run_wear(in, entry);
     in.wear = only(c.wear, WearKind::Impact);

@@ -44,6 +44,24 @@ Config load_config_or_default(const std::string& path);
 /// Prints a summary line to stderr unless quiet.
 void note(const std::string& text);
 
+/// A run's progress as a percentage on one line of stderr ("\r  LABEL: NN %"),
+/// drawn only when `on` and stderr is a terminal; the line is cleared when the
+/// object goes, by an error too (wear, charge).
+class PercentLine {
+ public:
+  PercentLine(std::string label, bool on);
+  ~PercentLine();
+  PercentLine(const PercentLine&) = delete;
+  PercentLine& operator=(const PercentLine&) = delete;
+  /// The callback for a run's share done (0..1); empty when nothing is drawn.
+  std::function<void(double)> callback();
+
+ private:
+  std::string label_;
+  bool on_;
+  int shown_ = -1;  // the percentage on the line; -1: none drawn
+};
+
 /// An InputError raised while running a model on configuration `c` (the DEM's
 /// step beyond the stable range, a criterion the start state already meets),
 /// with the location of its key in the configuration ("FILE:LINE: ") and,

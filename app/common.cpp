@@ -1,9 +1,11 @@
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <optional>
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include "app/commands.h"
 #include "forecast/forecast.h"
@@ -28,6 +30,23 @@ Config load_config_or_default(const std::string& path) {
 }
 
 void note(const std::string& text) { std::cerr << text << "\n"; }
+
+PercentLine::PercentLine(std::string label, bool on) : label_(std::move(label)), on_(on && isatty(STDERR_FILENO)) {}
+
+PercentLine::~PercentLine() {
+  if (shown_ >= 0) std::fprintf(stderr, "\r%*s\r", static_cast<int>(label_.size()) + 10, "");
+}
+
+std::function<void(double)> PercentLine::callback() {
+  if (!on_) return {};
+  return [this](double f) {
+    const int pct = static_cast<int>(100 * f);
+    if (pct == shown_) return;
+    shown_ = pct;
+    std::fprintf(stderr, "\r  %s: %3d %%", label_.c_str(), pct);
+    std::fflush(stderr);
+  };
+}
 
 void rethrow_located(const Config& c, const InputError& e) { throw located(c, e); }
 
