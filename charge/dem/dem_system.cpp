@@ -262,9 +262,13 @@ void DemSystem::rebuild_rows(int t, const StepClock& clk) {
     }
     d.row_count[i - p0] = static_cast<int>(d.loc_j.size()) - before;
   }
-  // Wall candidates of the discs dealt to this thread (i = t, t + nt, ...: the
-  // discs pressed on the lower liner are spread over the threads): the elements
-  // within radius + skin of the disc in the wall's frame. They stay complete
+  // Wall candidates of this partition's discs, its particle range (the one its
+  // gather reads): the elements within radius + skin of the disc in the wall's
+  // frame. (Dealt round the partitions instead, i = t, t + 8, ..., the discs on
+  // the liner were spread evenly, but the two threads wrote neighbouring discs'
+  // liner forces and read each other's in the gather: with the lanes of
+  // PhaseQueue, the Qiu slice on 2 threads ran 0.89 x real time that way and
+  // 1.08 x this way, docs/benchmarks.md, "Thread lanes".) They stay complete
   // until the next build: advance() rebuilds before a disc's displacement and
   // the wall's turn at its outermost node add up to the skin.
   d.wall_part.clear();
@@ -274,7 +278,7 @@ void DemSystem::rebuild_rows(int t, const StepClock& clk) {
     const WallMesh& W = walls_;
     const double rc = W.min_radius - rmax_ - skin_;
     const double rc2 = rc > 0 ? rc * rc : -1;
-    for (int i = t; i < n_; i += np_) {
+    for (int i = p0; i < p1; ++i) {
       const double px = x[i], py = y[i];
       if (px * px + py * py < rc2) continue;
       const double qx = clk.c * px + clk.s * py, qy = -clk.s * px + clk.c * py;
@@ -775,40 +779,68 @@ namespace {
 /// the same work into the same buffers, whoever runs it, so the results do not
 /// depend on the schedule; a thread the system has descheduled never holds up
 /// the others (they take its items), which a barrier would.
+///
+/// Each thread of the team has a lane, a contiguous block of each phase's items
+/// (thread t of T: items [t n / T, (t + 1) n / T)), which it works through first
+/// before it takes what is left in the other lanes. Item k of every phase covers
+/// about the same discs (the partitions of dem_system.h), so a thread keeps
+/// finding in its cache what it wrote in the phase before; with one shared
+/// counter the two threads took alternate items and the gather of a step read
+/// the other core's force buffers.
 class PhaseQueue {
  public:
+  static constexpr int kMaxLanes = 64;
+  explicit PhaseQueue(int items) : items_(items) {}
+  /// Control thread, before its first phase: the lanes (threads in the team).
+  void set_lanes(int lanes) { lanes_ = std::clamp(lanes, 1, std::min(items_, kMaxLanes)); }
   /// Control thread: opens the next phase.
-  unsigned publish(int kind, int items) {
+  unsigned publish(int kind) {
     const unsigned s = ++seq_;
     kind_[s & 1].store(kind, std::memory_order_relaxed);
-    items_[s & 1].store(items, std::memory_order_relaxed);
     done_[s & 1].store(0, std::memory_order_relaxed);
-    claim_.store(static_cast<unsigned long long>(s) << 32, std::memory_order_release);
+    for (int l = 0; l < lanes_; ++l) lane_[l].next.store(pack(s, lane_begin(l)), std::memory_order_release);
+    phase_.store(s, std::memory_order_release);
     return s;
   }
-  /// Claims an item of the current phase; false when all are taken.
-  bool claim(unsigned& s, int& kind, int& item) {
-    unsigned long long c = claim_.load(std::memory_order_acquire);
-    for (;;) {
-      s = static_cast<unsigned>(c >> 32);
-      const int n = static_cast<int>(c & 0xffffffffULL);
-      // items_[s & 1] stays put while phase s has unclaimed items; if the phase
-      // moved on meanwhile, the exchange below fails and the value is not used
-      if (s == 0 || n >= items_[s & 1].load(std::memory_order_acquire)) return false;
-      if (claim_.compare_exchange_weak(c, c + 1, std::memory_order_acq_rel, std::memory_order_acquire)) {
-        kind = kind_[s & 1].load(std::memory_order_relaxed);
-        item = n;
-        return true;
+  /// Claims an item of the current phase, from lane `own` first; false when
+  /// all are taken.
+  bool claim(int own, unsigned& s, int& kind, int& item) {
+    s = phase_.load(std::memory_order_acquire);  // also makes lanes_ visible (set before the first publish)
+    if (s == 0) return false;
+    for (int q = 0; q < lanes_; ++q) {
+      const int l = (own + q) % lanes_;
+      const int end = lane_begin(l + 1);
+      std::atomic<unsigned long long>& next = lane_[l].next;
+      unsigned long long c = next.load(std::memory_order_acquire);
+      // a counter of another phase (the control thread moved on meanwhile) is never exchanged
+      while (static_cast<unsigned>(c >> 32) == s && static_cast<int>(c & 0xffffffffULL) < end) {
+        if (next.compare_exchange_weak(c, c + 1, std::memory_order_acq_rel, std::memory_order_acquire)) {
+          // kind_ of phase s stays put while it has unclaimed items
+          kind = kind_[s & 1].load(std::memory_order_relaxed);
+          item = static_cast<int>(c & 0xffffffffULL);
+          return true;
+        }
       }
     }
+    return false;
   }
   void complete(unsigned s) { done_[s & 1].fetch_add(1, std::memory_order_acq_rel); }
-  bool finished(unsigned s, int items) const { return done_[s & 1].load(std::memory_order_acquire) == items; }
+  bool finished(unsigned s) const { return done_[s & 1].load(std::memory_order_acquire) == items_; }
   std::atomic<bool> stop{false};
 
  private:
-  std::atomic<unsigned long long> claim_{0};
-  std::atomic<int> kind_[2] = {}, items_[2] = {}, done_[2] = {};
+  static unsigned long long pack(unsigned s, int item) {
+    return (static_cast<unsigned long long>(s) << 32) | static_cast<unsigned>(item);
+  }
+  int lane_begin(int l) const { return items_ * l / lanes_; }
+  struct alignas(64) Lane {
+    std::atomic<unsigned long long> next{0};  // phase number << 32 | next item of the lane
+  };
+  const int items_;
+  int lanes_ = 1;
+  Lane lane_[kMaxLanes];
+  std::atomic<unsigned> phase_{0};
+  std::atomic<int> kind_[2] = {}, done_[2] = {};
   unsigned seq_ = 0;
 };
 
@@ -838,7 +870,7 @@ void DemSystem::advance(long long steps) {
     StepClock clk;
     bool first = false, do_check = false, drift_next = false;
   } args;
-  PhaseQueue queue;
+  PhaseQueue queue(np_);
   auto execute = [&](int kind, int k) {
     switch (kind) {
       case kKickDrift: kick_drift(k); break;
@@ -858,14 +890,14 @@ void DemSystem::advance(long long steps) {
   };
   // Control thread: open a phase of np_ items (the partitions), work on it, wait for the rest.
   auto run = [&](int kind) {
-    const unsigned s = queue.publish(kind, np_);
+    const unsigned s = queue.publish(kind);
     unsigned cs;
     int ck, item;
-    while (queue.claim(cs, ck, item)) {
+    while (queue.claim(0, cs, ck, item)) {
       execute(ck, item);
       queue.complete(cs);
     }
-    for (int spins = 0; !queue.finished(s, np_);) relax(spins);
+    for (int spins = 0; !queue.finished(s);) relax(spins);
   };
 
   // Threads for this call. With adapt_threads, 1 or nt_, whichever cost less
@@ -888,11 +920,12 @@ void DemSystem::advance(long long steps) {
 #pragma omp parallel num_threads(use)
   {
     if (omp_get_thread_num() != 0) {
-      // helper: take items until the control thread stops
+      // helper: take items until the control thread stops, from its own lane first
+      const int own = omp_get_thread_num();
       unsigned cs;
       int ck, item;
       for (int spins = 0; !queue.stop.load(std::memory_order_acquire);) {
-        if (queue.claim(cs, ck, item)) {
+        if (queue.claim(own, cs, ck, item)) {
           execute(ck, item);
           queue.complete(cs);
           spins = 0;
@@ -901,6 +934,7 @@ void DemSystem::advance(long long steps) {
         }
       }
     } else {
+      queue.set_lanes(omp_get_num_threads());
       const long long s_begin = forces_valid_ ? 0 : -1;
       for (long long s = s_begin; s < steps; ++s) {
         const bool first = s < 0;

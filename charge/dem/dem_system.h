@@ -15,10 +15,11 @@
 // list. Walls: each disc near the wall is tested against its candidate
 // elements, listed with the neighbour list in the wall's body frame. Threads:
 // the work of each phase is cut into 8 fixed partitions (particle ranges for
-// the kicks, a work-balanced split of the list rows for the contacts),
-// partition k adding into its own force buffer k; the buffers are summed in
-// partition order, so a run repeats bit for bit whatever the thread count and
-// whichever thread ran which partition (docs/models/dem.md §6).
+// the kicks and the liner contacts, a work-balanced split of the list rows for
+// the particle contacts), partition k adding into its own force buffer k; the
+// buffers are summed in partition order, so a run repeats bit for bit whatever
+// the thread count and whichever thread ran which partition. Each thread works
+// through its own block of partitions first (docs/models/dem.md §6).
 //
 // Units SI; 2D discs are cylinders of unit length: masses [kg/m], forces [N/m],
 // torques [N m/m], moments of inertia [kg m2/m].
