@@ -789,10 +789,9 @@ namespace {
 /// the other core's force buffers.
 class PhaseQueue {
  public:
-  static constexpr int kMaxLanes = 64;
-  explicit PhaseQueue(int items) : items_(items) {}
-  /// Control thread, before its first phase: the lanes (threads in the team).
-  void set_lanes(int lanes) { lanes_ = std::clamp(lanes, 1, std::min(items_, kMaxLanes)); }
+  explicit PhaseQueue(int items) : items_(items), lane_(static_cast<size_t>(std::max(1, items))) {}
+  /// Control thread, before its first phase: the lanes (threads in the team; at most one per item).
+  void set_lanes(int lanes) { lanes_ = std::clamp(lanes, 1, static_cast<int>(lane_.size())); }
   /// Control thread: opens the next phase.
   unsigned publish(int kind) {
     const unsigned s = ++seq_;
@@ -832,13 +831,13 @@ class PhaseQueue {
   static unsigned long long pack(unsigned s, int item) {
     return (static_cast<unsigned long long>(s) << 32) | static_cast<unsigned>(item);
   }
-  int lane_begin(int l) const { return items_ * l / lanes_; }
+  int lane_begin(int l) const { return range_begin(items_, l, lanes_); }
   struct alignas(64) Lane {
     std::atomic<unsigned long long> next{0};  // phase number << 32 | next item of the lane
   };
   const int items_;
   int lanes_ = 1;
-  Lane lane_[kMaxLanes];
+  std::vector<Lane> lane_;
   std::atomic<unsigned> phase_{0};
   std::atomic<int> kind_[2] = {}, done_[2] = {};
   unsigned seq_ = 0;
