@@ -144,15 +144,24 @@ void validate_measured_profile(const MeasuredProfile& p, double R, int segments)
     throw InputError(p.source, fmt::format("{}: the first and last thickness differ ({} m at {} vs {} m at {}); the "
                                            "profile repeats round the ring, so both ends must match within 1 mm",
                                            p.source, pts.front().y(), pt(0), pts.back().y(), pt(pts.size() - 1)));
-  // A radial step on a segment edge (the next point still on the edge) makes
-  // the ring run back along the edge between two segments; the remesh cannot
-  // keep such an edge simple (fuzz_remesh, corpus remesh-crash-f307528c and
-  // remesh-crash-d0914b3b).
+  // Only the two ends lie on the segment edges. A radial step on an edge (the
+  // next point still on it) makes the ring run back along the edge between
+  // two segments, and a later point back on the edge touches the ring there
+  // (the edge is the radial line the old body closes along); the remesh
+  // cannot keep either simple (fuzz_remesh, corpus remesh-crash-f307528c,
+  // remesh-crash-d0914b3b and remesh-crash-96d36db2).
   const size_t n = pts.size();
-  if (pts[1].x() <= tol || pts[n - 2].x() >= width - tol)
-    throw InputError(p.source, fmt::format("{}: {} lies on the segment edge as well as {}: a radial step on "
-                                           "the edge is not allowed; move it at least 1 mm into the segment",
-                                           p.source, pts[1].x() <= tol ? pt(1) : pt(n - 2), pts[1].x() <= tol ? pt(0) : pt(n - 1)));
+  for (size_t i = 1; i + 1 < n; ++i)
+    if (pts[i].x() <= tol || pts[i].x() >= width - tol) {
+      const bool at_start = pts[i].x() <= tol;
+      const bool step = i == 1 ? at_start : (i == n - 2 && !at_start);
+      throw InputError(p.source,
+                       fmt::format("{}: {} lies on the segment edge as well as {}: {} is not allowed; move it at "
+                                   "least 1 mm into the segment",
+                                   p.source, pt(i), at_start ? pt(0) : pt(n - 1),
+                                   step ? "a radial step on the edge" : "only the two ends may lie on the edges, a "
+                                                                        "point that returns to an edge"));
+    }
   // detail finer than kMinProfileDetailM (a point repeated, a needle): checked
   // before the crossings, which a repeated point would be reported as
   const double d_min = kMinProfileDetailM;

@@ -80,6 +80,10 @@ TEST_CASE("bad profile files are refused naming the file and the line", "[geomet
   // a radial step on either segment edge (fuzz_remesh findings)
   refuse_profile({{0, 0.07}, {0, 0.05}, {0.2, 0.3}, {w, 0.07}}, "radial step on the edge");
   refuse_profile({{0, 0.07}, {0.2, 0.3}, {w, 0.05}, {w, 0.07}}, "radial step on the edge");
+  // a point that returns to an edge after leaving it (fuzz_remesh, corpus
+  // remesh-crash-96d36db2: the old body touched its closing edge there)
+  refuse_profile({{0, 0.07}, {0.1, 0.09}, {0, 0.05}, {w, 0.07}}, "point 3 lies on the segment edge as well as point 1");
+  refuse_profile({{0, 0.07}, {0.1, 0.09}, {w, 0.05}, {0.3, 0.02}, {w, 0.07}}, "only the two ends may lie on the edges");
 
   // read from a file, a refusal names the offending points' lines (a comment
   // and the header shift them; docs/reliability.md, known issue 5)
