@@ -232,7 +232,8 @@ int run_calibrate(const CalibrateOptions& o) {
 void register_calibrate(CLI::App& app, std::function<int()>& run) {
   auto o = std::make_shared<CalibrateOptions>();
   auto* cmd = app.add_subcommand("calibrate", "Fit the wear calibration factors to measured profiles and forecast the rest of the life");
-  cmd->add_option("CONFIG", o->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill");
+  cmd->add_option("CONFIG", o->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill")
+      ->check(config_path_check());
   cmd->add_option("--measured", o->measured, "Measured profiles: CSV hours,x_m,y_m (docs/measured-profiles.md)");
   cmd->add_option("--fit", o->fit, "Factors to fit: abrasion,impact (default), abrasion, impact, all");
   cmd->add_flag("--json", o->json, "Print one JSON object");

@@ -250,8 +250,10 @@ int run_charge(const ChargeOptions& o) {
     const std::string tmp = dir.temp_path("charge.h5");
     write_charge_h5(tmp, c, s, in, r);
     dir.commit(tmp, "charge.h5");
-    draw_charts("charge", dir.path("charge.h5"), dir.dir());
-    if (!o.json) std::cout << fmt::format("Wrote {} and charts in {}\n", dir.path("charge.h5"), dir.dir());
+    const bool charts = draw_charts("charge", dir.path("charge.h5"), dir.dir());
+    if (!o.json)
+      std::cout << fmt::format("Wrote {}{} in {}{}\n", dir.path("charge.h5"), charts ? " and charts" : "", dir.dir(),
+                               charts ? "" : " (no charts: see the warning above)");
   }
   return 0;
 }
@@ -261,13 +263,14 @@ int run_charge(const ChargeOptions& o) {
 void register_charge(CLI::App& app, std::function<int()>& run) {
   auto opts = std::make_shared<ChargeOptions>();
   auto* cmd = app.add_subcommand("charge", "Move the charge and report toe, shoulder, power... (the nine indicators)");
-  cmd->add_option("CONFIG", opts->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill");
+  cmd->add_option("CONFIG", opts->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill")
+      ->check(config_path_check());
   cmd->add_option("--model", opts->model, "Charge model (default: [model] charge of the configuration)")
       ->check(CLI::IsMember({"empirical", "layer", "dem"}));
   cmd->add_option("--variant", opts->variant, "Layer model version of thesis §4.6 (default: [model] variant)")
       ->check(CLI::IsMember({"1.0", "1.1", "1.2"}));
   cmd->add_option("--revolutions", opts->revolutions,
-                  "Mill revolutions to average over, after settling (default 2; 0 < N <= 1e4)");
+                  "Mill revolutions to average over, after settling (default 2; 0.05 <= N <= 1e4)");
   cmd->add_flag("--json", opts->json, "Print one JSON object instead of the human summary");
   cmd->add_option("--out", opts->out, "Write charge.h5 and charts into this folder")
       ->check(out_folder_check("without --out nothing is written"));

@@ -314,8 +314,10 @@ int run_compare(const CompareOptions& o) {
       h5.close();
     }
     dir.commit(tmp, "compare.h5");
-    draw_charts("compare", dir.path("compare.h5"), dir.dir());
-    if (!o.json) std::cout << fmt::format("Wrote {} and charts in {}\n", dir.path("compare.h5"), dir.dir());
+    const bool charts = draw_charts("compare", dir.path("compare.h5"), dir.dir());
+    if (!o.json)
+      std::cout << fmt::format("Wrote {}{} in {}{}\n", dir.path("compare.h5"), charts ? " and charts" : "", dir.dir(),
+                               charts ? "" : " (no charts: see the warning above)");
   }
   return 0;
 }
@@ -325,7 +327,7 @@ int run_compare(const CompareOptions& o) {
 void register_compare(CLI::App& app, std::function<int()>& run) {
   auto o = std::make_shared<CompareOptions>();
   auto* cmd = app.add_subcommand("compare", "Forecasts for several lifter designs or operating choices side by side");
-  cmd->add_option("CONFIG", o->configs, "Two or more configurations, or one with --vary");
+  cmd->add_option("CONFIG", o->configs, "Two or more configurations, or one with --vary")->check(config_path_check());
   cmd->add_option("--vary", o->vary,
                   "KEY=v1,v2,... one key (section.key) over several values (a string key's without quotes: "
                   "mill.rotation=ccw,cw); repeated: every combination")

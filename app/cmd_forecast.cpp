@@ -44,8 +44,6 @@ ProgressFn progress_bar(bool quiet) {
   };
 }
 
-std::string num(double v, const char* f) { return std::isfinite(v) ? fmt::format(fmt::runtime(f), v) : "n/a"; }
-
 namespace {
 
 /// Forwards to a rate provider and fails at drive `fail_at` (0-based).
@@ -250,8 +248,10 @@ int run_forecast_command(const ForecastOptions& o) {
     }
     dir->commit(tmp, "forecast.h5");
     std::filesystem::remove(dir->path("checkpoint.h5"));  // the run is complete
-    draw_charts("forecast", dir->path("forecast.h5"), dir->dir());
-    if (!o.json) std::cout << fmt::format("Wrote {} and charts in {}\n", dir->path("forecast.h5"), dir->dir());
+    const bool charts = draw_charts("forecast", dir->path("forecast.h5"), dir->dir());
+    if (!o.json)
+      std::cout << fmt::format("Wrote {}{} in {}{}\n", dir->path("forecast.h5"), charts ? " and charts" : "", dir->dir(),
+                               charts ? "" : " (no charts: see the warning above)");
   }
   return 0;
 }
@@ -261,7 +261,8 @@ int run_forecast_command(const ForecastOptions& o) {
 void register_forecast(CLI::App& app, std::function<int()>& run) {
   auto o = std::make_shared<ForecastOptions>();
   auto* cmd = app.add_subcommand("forecast", "Forecast the liner's wear life and relining date (the main job)");
-  cmd->add_option("CONFIG", o->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill");
+  cmd->add_option("CONFIG", o->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill")
+      ->check(config_path_check());
   cmd->add_option("--method", o->method, "ode (default), amplify (the thesis/Qiu method) or euler")
       ->check(CLI::IsMember({"ode", "amplify", "euler"}));
   cmd->add_flag("--json", o->json, "Print one JSON object instead of the human summary");

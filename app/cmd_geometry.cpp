@@ -88,8 +88,10 @@ int run_geometry(const GeometryOptions& o) {
       h5.close();
     }
     dir.commit(tmp, "geometry.h5");
-    draw_charts("geometry", dir.path("geometry.h5"), dir.dir());
-    if (!o.json) std::cout << fmt::format("Wrote {} and charts in {}\n", dir.path("geometry.h5"), dir.dir());
+    const bool charts = draw_charts("geometry", dir.path("geometry.h5"), dir.dir());
+    if (!o.json)
+      std::cout << fmt::format("Wrote {}{} in {}{}\n", dir.path("geometry.h5"), charts ? " and charts" : "", dir.dir(),
+                               charts ? "" : " (no charts: see the warning above)");
   }
   return 0;
 }
@@ -99,7 +101,8 @@ int run_geometry(const GeometryOptions& o) {
 void register_geometry(CLI::App& app, std::function<int()>& run) {
   auto opts = std::make_shared<GeometryOptions>();
   auto* cmd = app.add_subcommand("geometry", "Build the liner ring and report lifter height, face angles, mass...");
-  cmd->add_option("CONFIG", opts->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill");
+  cmd->add_option("CONFIG", opts->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill")
+      ->check(config_path_check());
   cmd->add_flag("--json", opts->json, "Print one JSON object instead of the human summary");
   cmd->add_option("--out", opts->out, "Write geometry.h5 and charts into this folder")
       ->check(out_folder_check("without --out nothing is written"));

@@ -77,6 +77,8 @@ int run_plot(const PlotOptions& o) {
   if (rc == 4)
     throw InputError(o.file, fmt::format("results file {} is damaged: dataset {}; allowed only finite numbers there "
                                          "in a {} results file: nothing drawn", o.file, report, kind));
+  if (rc == 5)  // a chart could not be written there (a folder of its name, a full disk)
+    throw InputError(out.dir(), fmt::format("charts not drawn in {}: {}", out.dir(), report));
   if (rc != 0) {
     std::cerr << (rc == -1 ? "linerlife: error: the plotting script is not installed\n"
                            : fmt::format("linerlife: error: charts not drawn (the plotting script exited with {}): "

@@ -123,8 +123,8 @@ int run_wear_command(const WearOptions& o) {
     std::cout << fmt::format("  deepest recession           {:>10.4f} m\n", r.max_recession_m);
     std::cout << fmt::format("  lifter height               {:>10.4f} m (was {:.4f})\n", m1.lifter_height_m,
                              m0.lifter_height_m);
-    std::cout << fmt::format("  leading face angle          {:>10.2f} deg (was {:.2f})\n", m1.face_angle_leading_deg,
-                             m0.face_angle_leading_deg);
+    std::cout << fmt::format("  leading face angle          {:>10} deg (was {})\n", num(m1.face_angle_leading_deg, "{:.2f}"),
+                             num(m0.face_angle_leading_deg, "{:.2f}"));
     std::cout << fmt::format("  simulated / wall time       {:>10.2f} s / {:.3f} s ({:.0f} x real time)\n",
                              r.simulated_s, r.wall_s, r.realtime_ratio);
     if (r.worn_through) std::cout << "  stopped: " << r.message << "\n";
@@ -136,8 +136,10 @@ int run_wear_command(const WearOptions& o) {
     const std::string tmp = dir.temp_path("wear.h5");
     write_wear_h5(tmp, c, j, r, abrasion_only ? &*abrasion_only : nullptr, impact_only ? &*impact_only : nullptr);
     dir.commit(tmp, "wear.h5");
-    draw_charts("wear", dir.path("wear.h5"), dir.dir());
-    if (!o.json) std::cout << fmt::format("Wrote {} and charts in {}\n", dir.path("wear.h5"), dir.dir());
+    const bool charts = draw_charts("wear", dir.path("wear.h5"), dir.dir());
+    if (!o.json)
+      std::cout << fmt::format("Wrote {}{} in {}{}\n", dir.path("wear.h5"), charts ? " and charts" : "", dir.dir(),
+                               charts ? "" : " (no charts: see the warning above)");
   }
   return 0;
 }
@@ -148,7 +150,8 @@ void register_wear(CLI::App& app, std::function<int()>& run) {
   auto opts = std::make_shared<WearOptions>();
   auto* cmd = app.add_subcommand(
       "wear", "The per-step coupled wear run (thesis ch. 5): charge model, amplified wear, remeshing, feedback");
-  cmd->add_option("CONFIG", opts->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill");
+  cmd->add_option("CONFIG", opts->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill")
+      ->check(config_path_check());
   cmd->add_option("--revolutions", opts->revolutions, "Mill revolutions to simulate ([wear] revolutions)");
   cmd->add_option("--amplification", opts->amplification,
                   "Wear amplification A for abrasion and impact ([wear] amplification_*; Qiu 2001: 1e7)");

@@ -35,6 +35,14 @@ void register_plot(CLI::App& app, std::function<int()>& run);
 /// command does without --out.
 CLI::Validator out_folder_check(const std::string& without);
 
+/// v in the format f, or "n/a" where it is not a finite number (a face angle
+/// of a plain plate, a gauge of a worn-out lifter).
+std::string num(double v, const char* f);
+
+/// Refuses an empty CONFIG argument (a script's unset variable), which would
+/// otherwise run the bundled mill as if no file had been given.
+CLI::Validator config_path_check();
+
 /// The program version ("0.1.0 (git abc1234)").
 const char* program_version();
 
@@ -71,7 +79,14 @@ class PercentLine {
 /// The same error, located, without throwing it.
 InputError located(const Config& c, const InputError& e);
 
-/// A --revolutions option's value: refused (InputError) unless 0 < n <= 1e4.
+/// The fewest mill revolutions a run may average over (--revolutions, [wear]
+/// revolutions and drive_revolutions): 18 deg of mill rotation, 9 of the layer
+/// model's 2-deg samples. A shorter window averages over a step or two, or
+/// none, and gives all-zero or undefined indicators (docs/reliability.md).
+constexpr double kMinRevolutions = 0.05;
+
+/// A --revolutions option's value: refused (InputError) unless
+/// kMinRevolutions <= n <= 1e4.
 double checked_revolutions(double n);
 
 /// How many of `n` independent forecasts (compare's cases, calibrate's finite

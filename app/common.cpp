@@ -25,6 +25,18 @@ CLI::Validator out_folder_check(const std::string& without) {
       "");
 }
 
+std::string num(double v, const char* f) { return std::isfinite(v) ? fmt::format(fmt::runtime(f), v) : "n/a"; }
+
+CLI::Validator config_path_check() {
+  return CLI::Validator(
+      [](std::string& path) -> std::string {
+        if (!path.empty()) return "";
+        return "an empty configuration path (\"\"); allowed the path of a TOML file, or no CONFIG at all for the "
+               "bundled Qiu mill";
+      },
+      "");
+}
+
 Config load_config_or_default(const std::string& path) {
   return path.empty() ? load_default_config() : load_config_file(path);
 }
@@ -64,8 +76,12 @@ int forecast_jobs(int requested, int n, bool dem) {
 }
 
 double checked_revolutions(double n) {
-  if (!(std::isfinite(n) && n > 0 && n <= 1e4))
-    throw InputError("--revolutions", fmt::format("--revolutions {}: out of range; allowed 0 < value <= 1e4", n));
+  if (!(std::isfinite(n) && n >= kMinRevolutions && n <= 1e4))
+    throw InputError("--revolutions", fmt::format("--revolutions {}: out of range; allowed {} <= value <= 1e4{}", n,
+                                                  kMinRevolutions,
+                                                  n < kMinRevolutions ? " (a shorter run averages over too few steps "
+                                                                        "to give indicators)"
+                                                                      : ""));
   return n;
 }
 

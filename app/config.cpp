@@ -266,6 +266,13 @@ void check_and_resolve(Config& c) {
                         "pattern must not be taller than the high ones; allowed 0 <= low_lifter_height_m <= {} m",
                         L.low.lifter_height_m, L.design.lifter_height_m, L.design.lifter_height_m));
   const LinerMetrics lm = metrics(surface, m.rotation, L.density_kg_m3);
+  // The trunnion sets the slurry level of an overflow mill and the cone ends'
+  // power: it must open inside the liners, not only inside the shell.
+  if (c.charge.trunnion_radius_m > 0 && 2 * c.charge.trunnion_radius_m >= lm.effective_diameter_m)
+    fail_at(c, "mill.trunnion_diameter_m",
+            fmt::format("trunnion_diameter_m = {} m is not smaller than the diameter inside the liners ({:.4f} m): "
+                        "allowed 0 < trunnion_diameter_m < {:.4f} m",
+                        2 * c.charge.trunnion_radius_m, lm.effective_diameter_m, lm.effective_diameter_m));
   const double nc = critical_speed_rpm(lm.effective_diameter_m);
   if (c.speed_fraction_critical) {
     c.mill.speed_rpm = *c.speed_fraction_critical * nc;

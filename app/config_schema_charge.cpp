@@ -8,8 +8,8 @@ namespace linerlife {
 void add_charge_keys(Schema& s) {
   s.sections.push_back("charge");
   s.keys.push_back(real_key("charge", "filling", "-",
-                            "Total charge J as a fraction of the volume inside the liners (balls, rock, voids)", 0.0,
-                            0.5, true, true, std::nullopt, [](Config& c, double v) { c.charge.filling = v; },
+                            "Total charge J as a fraction of the volume inside the liners (balls, rock, voids)", 0.01,
+                            0.5, false, true, std::nullopt, [](Config& c, double v) { c.charge.filling = v; },
                             [](const Config& c) { return c.charge.filling; }, true));
   s.keys.push_back(real_key("charge", "ball_filling", "-", "Ball charge J_B as a fraction of the volume inside the liners",
                             0.0, 0.5, false, true, std::nullopt, [](Config& c, double v) { c.charge.ball_filling = v; },

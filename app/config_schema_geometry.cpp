@@ -80,8 +80,10 @@ void add_liner_keys(Schema& s) {
                             false, std::optional<double>(7800.0),
                             [](Config& c, double v) { c.liner.density_kg_m3 = v; },
                             [](const Config& c) { return c.liner.density_kg_m3; }));
-  s.keys.push_back(real_key("liner", "hardness_bhn", "BHN", "Brinell hardness of the liner material", 0.0, 1000.0,
-                            true, false, std::optional<double>(350.0),
+  // (10 BHN, softer than pure aluminium, is a floor for a metal liner: the
+  // impact laws divide by the hardness, and 1e-300 made an infinite rate)
+  s.keys.push_back(real_key("liner", "hardness_bhn", "BHN", "Brinell hardness of the liner material", 10.0, 1000.0,
+                            false, false, std::optional<double>(350.0),
                             [](Config& c, double v) { c.liner.hardness_bhn = v; },
                             [](const Config& c) { return c.liner.hardness_bhn; }));
   s.keys.push_back(opt_string_key("liner", "profile_csv",

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "app/config.h"
+#include "app/commands.h"
 #include "app/config_schema_util.h"
 #include "geometry/errors.h"
 #include "wear/recession.h"
@@ -87,7 +88,7 @@ void add_wear_keys(Schema& s) {
       [](Config& c, long long v) { c.wear.feedback = v != 0; },
       [](const Config& c) { return static_cast<long long>(c.wear.feedback ? 1 : 0); }));
   k.push_back(real_key(
-      "wear", "revolutions", "-", "Mill revolutions the wear run simulates", 0.0, 1e4, true, false, 1.5,
+      "wear", "revolutions", "-", "Mill revolutions the wear run simulates", kMinRevolutions, 1e4, false, false, 1.5,
       [](Config& c, double v) { c.wear.revolutions = v; }, [](const Config& c) { return c.wear.revolutions; }));
   k.push_back(int_range_key(
       "remesh_every_steps", "Charge time steps between two remeshes of the worn profile (docs/models/wear.md §6.2)", 1,
@@ -98,8 +99,8 @@ void add_wear_keys(Schema& s) {
       [](Config& c, long long v) { c.wear.feedback_every_steps = static_cast<int>(v); },
       [](const Config& c) { return static_cast<long long>(c.wear.feedback_every_steps); }));
   k.push_back(real_key(
-      "wear", "drive_revolutions", "-", "Revolutions each charge drive averages its loads over", 0.0, 1000.0, true,
-      false, 1.0, [](Config& c, double v) { c.wear.drive_revolutions = v; },
+      "wear", "drive_revolutions", "-", "Revolutions each charge drive averages its loads over", kMinRevolutions,
+      1000.0, false, false, 1.0, [](Config& c, double v) { c.wear.drive_revolutions = v; },
       [](const Config& c) { return c.wear.drive_revolutions; }));
   k.push_back(int_range_key(
       "snapshots", "Worn profiles stored between the initial and the final one", 0, 100, 5,

@@ -21,6 +21,9 @@ int main(int argc, char** argv) {
   // a file-size limit makes the write fail (an OutputError, the temporary
   // removed) instead of killing the process with a half-written file
   std::signal(SIGXFSZ, SIG_IGN);
+  // likewise a reader that closed the pipe makes the write fail (exit 1, the
+  // message below) instead of killing the process silently with SIGPIPE
+  std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{
       "linerlife: forecast of tumbling-mill liner wear and the relining date.\n"
       "Every command without a CONFIG file runs the bundled Qiu (2001) SAG mill."};

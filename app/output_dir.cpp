@@ -54,13 +54,16 @@ void OutputDir::prepare() {
   fs::create_directories(dir_, ec);
   if (ec) throw InputError(dir_, fmt::format("output folder {} cannot be created: {}", dir_, ec.message()));
   // a run killed while writing (SIGKILL, power loss) leaves its temporary;
-  // the finished files it would have replaced are intact
+  // the finished files it would have replaced are intact. Temporaries are
+  // .NAME.tmp.PID, and the charts' .NAME.tmp.PID.png (matplotlib picks the
+  // format from the extension, app/plots/plot_common.py).
   for (const auto& e : fs::directory_iterator(dir_, ec)) {
     const std::string n = e.path().filename().string();
     const auto at = n.rfind(".tmp.");
     if (n.empty() || n[0] != '.' || at == std::string::npos) continue;
     char* end = nullptr;
     const long pid = std::strtol(n.c_str() + at + 5, &end, 10);
+    if (std::strcmp(end, ".png") == 0) end += 4;
     if (pid <= 0 || *end != '\0' || pid == static_cast<long>(getpid())) continue;
     if (kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) fs::remove(e.path(), ec);
   }

@@ -76,6 +76,10 @@ bool draw_charts(const std::string& kind, const std::string& results_h5, const s
                              results_h5, report);
     return false;
   }
+  if (rc == 5) {  // a chart file could not be written (a folder in the way, a full disk)
+    std::cerr << fmt::format("linerlife: warning: charts not drawn: {}; the results file is complete\n", report);
+    return false;
+  }
   if (rc != 0) {
     if (!report.empty()) std::cerr << report << "\n";
     std::cerr << fmt::format(

@@ -25,8 +25,13 @@ ChargeResult EmpiricalModel::run(const ChargeInput& in) const {
   const auto wall0 = std::chrono::steady_clock::now();
   if (!in.surface) throw InputError("", "empirical model: no liner surface given");
   const ChargeSpec& c = in.charge;
-  if (!(c.filling > 0 && c.filling < 1))
-    throw InputError("charge.filling", fmt::format("filling = {}: Morrell's C-model needs 0 < filling < 1", c.filling));
+  // A floor, not 0: the C-model's powers difference r_m^n and r_i^n, which
+  // cancel as the filling vanishes (filling 1e-16 gave -1994 kW, 1e-17 NaN).
+  if (!(c.filling >= 0.01 && c.filling < 1))
+    throw InputError("charge.filling",
+                     fmt::format("filling = {}: allowed 0.01 <= filling < 1 for Morrell's C-model (a smaller charge "
+                                 "is lost in the rounding of its inner radius)",
+                                 c.filling));
   const LinerMetrics lm = metrics(*in.surface, in.mill.rotation, 7800.0);
   const double D = lm.effective_diameter_m, rm = 0.5 * D;
   // Morrell's inputs in his units (t/m3, rev/s)

@@ -524,6 +524,17 @@ void LayerSim::setup_geometry() {
                                  "{:.3f} m inside the liners: the layer model needs at least four layers of elements "
                                  "across the radius",
                                  in_.model.element_size_diameters, d_, 2 * R_eff_));
+  {
+    // (an element is at least one ball: element_size_diameters >= 1 only shrinks the lattice)
+    const double cells = kPi * R_eff_ * R_eff_ / (d_ * d_);
+    if (!(cells <= kLayerMaxCells))
+      throw InputError("charge.ball_diameter_m",
+                       fmt::format("ball_diameter_m = {} m makes a lattice of {:.3g} cells in a mill of {:.3f} m inside "
+                                   "the liners; the layer model takes at most {:.0f}: allowed ball_diameter_m >= {:.4g} "
+                                   "m here",
+                                   d_ball_, cells, 2 * R_eff_, kLayerMaxCells,
+                                   R_eff_ * std::sqrt(kPi / kLayerMaxCells) / in_.model.element_size_diameters));
+  }
   ride_ = build_liner_ride_table(canon_.surface, a_, 4);
   if (in_.model.pocket_loads) setup_pocket_loads();
   phi_ = in_.mill.speed_rpm / critical_speed_rpm(2 * R_eff_);

@@ -36,4 +36,10 @@ constexpr double kLayerMaxCourant = 0.45;
 /// shoulder have long converged; 1e-9 s never ended (1e10 steps a revolution).
 constexpr double kLayerMinTimeStepS = 1e-4;
 
+/// The most cells the layer model's lattice may have (pi R^2 / d^2 for the
+/// radius R inside the liners and the element edge d). A large ball mill
+/// (8 m, 15 mm balls) needs about 220,000; 1 mm media in the Qiu mill would
+/// need 78 million, gigabytes of memory and hours a revolution.
+constexpr double kLayerMaxCells = 1e6;
+
 }  // namespace linerlife

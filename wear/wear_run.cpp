@@ -206,10 +206,12 @@ WearRunResult run_wear(const WearRunInput& in, const ChargeModelEntry& entry) {
 
   const double max_step_depth = 0.5 * h;
   auto check_step = [&]() {
-    if (dt * max_node_rate > max_step_depth)
+    if (!(dt * max_node_rate <= max_step_depth))
       throw SimulationError(
           fmt::format("one wear step of {:.4g} s removes up to {:.3g} m, more than half the element size ({} m): the "
-                      "amplification (abrasion {:g}, impact {:g}) is too large for the step; lower it or the time step",
+                      "amplification (abrasion {:g}, impact {:g}) is too large for the step, or the wear laws' "
+                      "constants ([liner] hardness_bhn, [wear]) make the wear that fast; lower the amplification or "
+                      "the time step, or check the constants",
                       dt, dt * max_node_rate, h, ws.amplification_abrasion, ws.amplification_impact));
   };
   check_step();

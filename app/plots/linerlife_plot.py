@@ -14,8 +14,10 @@ whole: a NaN or an infinite value there (a damaged file) draws nothing.
 Exit codes: 0 charts drawn; 3 the results file lacks a group, dataset or
 attribute its kind has (damaged or not written by linerlife); 4 a dataset it
 draws holds a value that is not a finite number: one line on the standard
-output, "DATASET: what is wrong", for `linerlife plot` to name it; 2 usage or
-an unknown kind; anything else (1: a missing package) the environment.
+output, "DATASET: what is wrong", for `linerlife plot` to name it; 5 a chart
+could not be written (one line on the standard output: the file and the
+system's reason, e.g. a folder in the way); 2 usage or an unknown kind;
+anything else (1: a missing package) the environment.
 """
 import importlib
 import os
@@ -51,6 +53,9 @@ def main(argv):
         except NotFinite as e:  # nothing drawn yet
             print(e, flush=True)
             return 4
+        except OSError as e:  # a chart could not be written (save() left no temporary)
+            print(f"cannot write {e.filename or out}: {e.strerror or e}", flush=True)
+            return 5
     return 0
 
 

@@ -38,8 +38,19 @@ def save(fig, out_dir, name):
     """Saves fig as out_dir/name atomically (temporary file, then rename)."""
     final = os.path.join(out_dir, name)
     tmp = os.path.join(out_dir, f".{name}.tmp.{os.getpid()}.png")
-    fig.savefig(tmp, dpi=130, bbox_inches="tight")
-    os.replace(tmp, final)
+    try:
+        fig.savefig(tmp, dpi=130, bbox_inches="tight")
+        os.replace(tmp, final)
+    except BaseException as e:
+        # no temporary left behind (a kill -9 still can: the next run's
+        # OutputDir::prepare() removes those of dead processes)
+        try:
+            os.remove(tmp)
+        except OSError:
+            pass
+        if isinstance(e, OSError):  # name the chart, not its temporary
+            raise OSError(e.errno, e.strerror, final) from e
+        raise
     import matplotlib.pyplot as plt
 
     plt.close(fig)

@@ -146,6 +146,22 @@ DemSetup make_dem_setup(const ChargeInput& in) {
   s.r_crest = s.walls.min_radius;
 
   // Particles, with the coarse-graining the scene allows (docs/models/dem.md §3).
+  // A charge of millions of discs (1 mm media in a SAG mill) is refused before
+  // it is drawn, naming the size that makes the count.
+  {
+    const DiscCount n = count_discs(ch, spec, s.free_area);
+    if (!(n.total() <= kDemMaxDiscs)) {
+      // the rocks' finest size is a quarter of the balls' unless given
+      const bool balls = n.balls >= n.rocks || !(spec.rock_diameter_min_m > 0);
+      const std::string key = balls ? "charge.ball_diameter_m" : "dem.rock_diameter_min_m";
+      const std::string value = balls ? fmt::format("ball_diameter_m = {} m", ch.ball_diameter_m)
+                                      : fmt::format("rock_diameter_min_m = {} m", spec.rock_diameter_min_m);
+      throw InputError(key, fmt::format("{}: the dem model would need {:.3g} discs ({:.3g} balls, {:.3g} rocks) for "
+                                        "this charge; it takes at most {:.0f}: larger media, or [dem] coarse_grain "
+                                        "(one disc of s times the size for s^2 media)",
+                                        value, n.total(), n.balls, n.rocks, kDemMaxDiscs));
+    }
+  }
   s.particles = make_particle_set(ch, spec, s.free_area, static_cast<unsigned long long>(spec.seed));
   const ParticleSet& ps = s.particles;
   if (ps.size() < 10)

@@ -19,6 +19,12 @@ namespace linerlife {
 /// test 1 blow up at 2 steps a contact and degrade at 2.5; 5 keeps a factor 2.
 constexpr double kDemMinStepsPerCollision = 5;
 
+/// The most discs a DEM run takes: 40 times the largest charge of the DEM's
+/// studies (5,000 discs, docs/benchmarks.md). 1 mm media in the Qiu mill
+/// would be millions of discs; such a run filled the machine's 23 GB of memory
+/// before it was refused.
+constexpr double kDemMaxDiscs = 2e5;
+
 /// [s] The shortest collision_time_s accepted. The default contacts last about
 /// 1 ms (0.97 ms in the Qiu slice, 2.4 ms in pilot test 1; docs/models/dem.md
 /// §2) and a real steel ball on steel about 0.1-0.3 ms; at 10 us a run already

@@ -47,6 +47,59 @@ double largest_real_diameter_m(const ChargeSpec& charge, const DemSpec& spec) {
   return d;
 }
 
+namespace {
+
+/// One size class of discs: n discs of real diameters uniform in [d0, d1].
+struct DiscClass {
+  double d0, d1, rho;
+  Material material;
+  long long n;
+};
+
+/// The classes make_particle_set() draws, in its order (balls, then the rock
+/// classes from the finest up).
+std::vector<DiscClass> disc_classes(const ChargeSpec& charge, const DemSpec& spec, double free_area_m2) {
+  std::vector<DiscClass> out;
+  const double s = spec.coarse_grain;
+  const double phi = spec.packing_fraction_2d;
+  // Balls: diameters uniform in [a, b]; mean disc area pi/4 (a^2 + ab + b^2)/3.
+  const double solid_balls = phi * charge.ball_filling * free_area_m2;  // [m2]
+  if (solid_balls > 0) {
+    const double b = charge.ball_diameter_m, a = b * (1 - spec.ball_size_spread);
+    const double mean_area = s * s * kPiP / 4 * (a * a + a * b + b * b) / 3;
+    out.push_back({a, b, charge.ball_density_kg_m3, Material::Ball,
+                   std::max(1LL, static_cast<long long>(std::llround(solid_balls / mean_area)))});
+  }
+  // Rocks: Gates-Gaudin-Schuhmann, area (= mass) share of class [d0, d1] is
+  // (d1^m - d0^m) / (dmax^m - dmin^m).
+  const double solid_rocks = phi * (charge.filling - charge.ball_filling) * free_area_m2;
+  if (solid_rocks > 1e-12 * free_area_m2) {
+    const double dmax = spec.rock_diameter_max_m > 0 ? spec.rock_diameter_max_m : charge.ball_diameter_m;
+    const double dmin = spec.rock_diameter_min_m > 0 ? spec.rock_diameter_min_m : 0.25 * charge.ball_diameter_m;
+    const double m = spec.rock_size_exponent;
+    const int classes = dmax > dmin * 1.0001 ? 6 : 1;
+    const double total = std::pow(dmax, m) - std::pow(dmin, m);
+    for (int c = 0; c < classes; ++c) {
+      const double d0 = dmin * std::pow(dmax / dmin, static_cast<double>(c) / classes);
+      const double d1 = dmin * std::pow(dmax / dmin, static_cast<double>(c + 1) / classes);
+      const double share = classes == 1 ? 1.0 : (std::pow(d1, m) - std::pow(d0, m)) / total;
+      const double mean_area = s * s * kPiP / 4 * (d0 * d0 + d0 * d1 + d1 * d1) / 3;
+      out.push_back({d0, d1, charge.ore_density_kg_m3, Material::Rock,
+                     static_cast<long long>(std::llround(solid_rocks * share / mean_area))});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+DiscCount count_discs(const ChargeSpec& charge, const DemSpec& spec, double free_area_m2) {
+  DiscCount n;
+  for (const DiscClass& c : disc_classes(charge, spec, free_area_m2))
+    (c.material == Material::Ball ? n.balls : n.rocks) += static_cast<double>(c.n);
+  return n;
+}
+
 ParticleSet make_particle_set(const ChargeSpec& charge, const DemSpec& spec, double free_area_m2,
                               unsigned long long seed) {
   ParticleSet ps;
@@ -67,34 +120,9 @@ ParticleSet make_particle_set(const ChargeSpec& charge, const DemSpec& spec, dou
     (mat == Material::Ball ? ps.ball_mass_kg_per_m : ps.rock_mass_kg_per_m) += m;
   };
 
-  // Balls: diameters uniform in [a, b]; mean disc area pi/4 (a^2 + ab + b^2)/3.
-  const double solid_balls = phi * charge.ball_filling * free_area_m2;  // [m2]
-  if (solid_balls > 0) {
-    const double b = charge.ball_diameter_m, a = b * (1 - spec.ball_size_spread);
-    const double mean_area = s * s * kPiP / 4 * (a * a + a * b + b * b) / 3;
-    const int n = std::max(1, static_cast<int>(std::lround(solid_balls / mean_area)));
-    for (int i = 0; i < n; ++i) add(a + (b - a) * rng.uniform(), charge.ball_density_kg_m3, Material::Ball);
-    ps.n_balls = n;
-  }
-
-  // Rocks: Gates-Gaudin-Schuhmann, area (= mass) share of class [d0, d1] is
-  // (d1^m - d0^m) / (dmax^m - dmin^m).
-  const double solid_rocks = phi * (charge.filling - charge.ball_filling) * free_area_m2;
-  if (solid_rocks > 1e-12 * free_area_m2) {
-    const double dmax = spec.rock_diameter_max_m > 0 ? spec.rock_diameter_max_m : charge.ball_diameter_m;
-    const double dmin = spec.rock_diameter_min_m > 0 ? spec.rock_diameter_min_m : 0.25 * charge.ball_diameter_m;
-    const double m = spec.rock_size_exponent;
-    const int classes = dmax > dmin * 1.0001 ? 6 : 1;
-    const double total = std::pow(dmax, m) - std::pow(dmin, m);
-    for (int c = 0; c < classes; ++c) {
-      const double d0 = dmin * std::pow(dmax / dmin, static_cast<double>(c) / classes);
-      const double d1 = dmin * std::pow(dmax / dmin, static_cast<double>(c + 1) / classes);
-      const double share = classes == 1 ? 1.0 : (std::pow(d1, m) - std::pow(d0, m)) / total;
-      const double mean_area = s * s * kPiP / 4 * (d0 * d0 + d0 * d1 + d1 * d1) / 3;
-      const int n = static_cast<int>(std::lround(solid_rocks * share / mean_area));
-      for (int i = 0; i < n; ++i) add(d0 + (d1 - d0) * rng.uniform(), charge.ore_density_kg_m3, Material::Rock);
-      ps.n_rocks += n;
-    }
+  for (const DiscClass& c : disc_classes(charge, spec, free_area_m2)) {
+    for (long long i = 0; i < c.n; ++i) add(c.d0 + (c.d1 - c.d0) * rng.uniform(), c.rho, c.material);
+    (c.material == Material::Ball ? ps.n_balls : ps.n_rocks) += static_cast<int>(c.n);
   }
 
   // Shuffle (Fisher-Yates with the portable generator) so sizes mix in the placement.

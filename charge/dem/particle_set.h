@@ -33,6 +33,15 @@ struct ParticleSet {
 /// charge has rocks (filling > ball_filling).
 double largest_real_diameter_m(const ChargeSpec& charge, const DemSpec& spec);
 
+/// How many discs make_particle_set() draws for this charge (below), balls
+/// and rocks, without drawing them: a run can refuse a charge of millions of
+/// discs before it allocates them.
+struct DiscCount {
+  double balls = 0, rocks = 0;
+  double total() const { return balls + rocks; }
+};
+DiscCount count_discs(const ChargeSpec& charge, const DemSpec& spec, double free_area_m2);
+
 /// Discs for `charge` in a mill whose free area (inside the liner) is
 /// free_area_m2 [m2]:
 ///  - the balls fill J_B free_area and the rocks (J - J_B) free_area as bulk

@@ -234,6 +234,25 @@ TEST_CASE("values that hung, ran out of memory or failed inside are refused at t
       {"# rock_diameter_max_m = ", "rock_diameter_max_m = 0.9", "charge --model dem --revolutions 1",
        {"rock_diameter_max_m = 0.9 m: [dem] the ", "discs of this charge do not fit in the mill",
         "as tall as the largest disc, this rock", "lower rock_diameter_max_m"}},
+      // exit 0 with a power of NaN kW (1e-16: -1994 kW)
+      {"filling = ", "filling = 1e-17", "charge --model empirical",
+       {"[charge] filling = 1e-17: out of range; allowed 0.01 <= value < 0.5"}},
+      // inside 0.001-0.35 m, but 4 GB and still growing after 2 min (layer), 23 GB (dem)
+      {"ball_diameter_m = ", "ball_diameter_m = 0.001", "charge --revolutions 1",
+       {"ball_diameter_m = 0.001 m makes a lattice of 7.79e+07 cells in a mill of 9.961 m inside the liners",
+        "at most 1000000: allowed ball_diameter_m >= 0.008828 m here"}},
+      {"ball_diameter_m = ", "ball_diameter_m = 0.001", "charge --model dem --revolutions 1",
+       {"ball_diameter_m = 0.001 m: the dem model would need", "discs", "it takes at most 200000", "coarse_grain"}},
+      // accepted by every command but the empirical model's, with the pool below the mill
+      {"# trunnion_diameter_m = ", "trunnion_diameter_m = 10.35", "geometry",
+       {"trunnion_diameter_m = 10.35 m is not smaller than the diameter inside the liners (9.9608 m): allowed 0 < "
+        "trunnion_diameter_m < 9.9608 m"}},
+      // exit 3 blaming the amplification for an infinite wear rate
+      {"hardness_bhn = ", "hardness_bhn = 1e-300", "wear --revolutions 0.1",
+       {"[liner] hardness_bhn = 1e-300: out of range; allowed 10 <= value <= 1000 BHN"}},
+      // exit 0 with no wear (a drive shorter than a step averages nothing)
+      {"drive_revolutions = ", "drive_revolutions = 1e-300", "wear --revolutions 0.2",
+       {"[wear] drive_revolutions = 1e-300: out of range; allowed 0.05 <= value <= 1000"}},
   };
   for (const Case& c : cases) {
     const std::string text = defaults_with(c.old_line, c.new_line);
@@ -348,6 +367,12 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
        {"--vary mill.diameter_m=big: big is not a value for [mill] diameter_m; allowed 0.1 < value <= 15 m"}},
       {"calibrate --measured " + csv + " --jobs -2" + o, {"--jobs -2", "allowed 1 <= value"}},
       {"plot" + o, {"RESULTS is required"}},
+      // exit 0 with all-zero indicators (a window shorter than a step)
+      {"charge --revolutions 0.01" + o, {"--revolutions 0.01: out of range; allowed 0.05 <= value <= 1e4"}},
+      {"wear --revolutions 1e-300" + o, {"--revolutions 1e-300: out of range; allowed 0.05 <= value <= 1e4"}},
+      // ran the bundled mill as if no file had been given (a script's unset variable)
+      {"geometry ''" + o, {"CONFIG: an empty configuration path (\"\")"}},
+      {"forecast --quiet ''" + o, {"CONFIG: an empty configuration path (\"\")"}},
       {"plot " + (dir / "missing.h5").string() + o, {"results file", "missing.h5 does not exist"}},
       {"plot " + toml + o, {"a.toml is not a readable HDF5 file"}},
       {"frobnicate" + o, {"--help"}},
@@ -702,5 +727,61 @@ TEST_CASE("an output folder that cannot be written, or a checkpoint that is not 
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(cp)) names.push_back(e.path().filename().string());
   CHECK(names == std::vector<std::string>{"checkpoint.h5"});
+  fs::remove_all(dir);
+}
+
+// Found by a review of the output paths (2026-12-04): a folder named like a
+// chart made the plotting script fail with a Python traceback, a warning that
+// blamed missing packages, "Wrote ... and charts" on stdout, and a temporary
+// .NAME.tmp.PID.png that no later run removed (OutputDir::prepare() matched
+// only .NAME.tmp.PID).
+TEST_CASE("a chart that cannot be written is said plainly and leaves no temporary", "[app][cli][output]") {
+  const fs::path dir = temp_dir("chart_blocked");
+  const fs::path out = dir / "out";
+  fs::create_directories(out / "liner_ring.png");
+  // temporaries of a process that no longer runs (a pid above pid_max), one of each kind
+  long pid_max = 4194304;
+  std::ifstream("/proc/sys/kernel/pid_max") >> pid_max;
+  const std::string dead = std::to_string(pid_max + 1);
+  write_file(out / (".liner_segment.png.tmp." + dead + ".png"), "half a chart");
+  write_file(out / (".geometry.h5.tmp." + dead), "half a file");
+  RunResult r = run_linerlife("geometry --out " + out.string(), 60);
+  INFO(r.err);
+  REQUIRE(r.code == 0);  // the results file is complete; only a chart is missing
+  if (r.err.find("Charts need python3-matplotlib") != std::string::npos) {
+    WARN("no matplotlib here: the chart part of this test is skipped");
+  } else {
+    CHECK_THAT(r.err, Catch::Contains("linerlife: warning: charts not drawn: cannot write " +
+                                      (out / "liner_ring.png").string() + ": Is a directory; the results file is "
+                                      "complete"));
+    CHECK_THAT(r.err, !Catch::Contains("Traceback"));
+    CHECK_THAT(r.out, Catch::Contains("Wrote " + (out / "geometry.h5").string() + " in " + out.string() +
+                                      " (no charts: see the warning above)"));
+    CHECK(fs::exists(out / "liner_segment.png"));
+    // `plot` into the same folder: the same reason, as an error (exit 2)
+    r = run_linerlife("plot " + (out / "geometry.h5").string(), 60);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("charts not drawn in " + out.string() + ": cannot write " +
+                                      (out / "liner_ring.png").string() + ": Is a directory"));
+  }
+  std::vector<std::string> temporaries;
+  for (const auto& e : fs::directory_iterator(out))
+    if (e.path().filename().string().find(".tmp.") != std::string::npos) temporaries.push_back(e.path().string());
+  INFO(temporaries.size() << " temporaries left, the first: " << (temporaries.empty() ? "" : temporaries.front()));
+  CHECK(temporaries.empty());
+  fs::remove_all(dir);
+}
+
+// Before: killed by SIGPIPE (exit 141, no message), where docs/reliability.md
+// promised exit 1 and a message for standard output that cannot be written.
+TEST_CASE("a reader that closes the pipe gets exit 1 and a message, not a silent SIGPIPE", "[app][cli][output]") {
+  const fs::path dir = temp_dir("closed_pipe");
+  const fs::path rc = dir / "rc", err = dir / "err";
+  // `true` exits at once, closing the pipe before linerlife writes
+  const std::string cmd = "( sleep 0.3; " + std::string(LINERLIFE_BINARY) + " geometry --json 2>" + err.string() +
+                          "; echo $? >" + rc.string() + " ) | true";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  CHECK(read_file(rc.string()) == "1\n");
+  CHECK_THAT(read_file(err.string()), Catch::Contains("linerlife: error: cannot write to the standard output"));
   fs::remove_all(dir);
 }

@@ -147,7 +147,7 @@ TEST_CASE("bad input exits 2 with a message and creates no output", "[app][cli][
     INFO(v << ": " << r.err);
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Catch::Contains("--revolutions"));
-    CHECK_THAT(r.err, Catch::Contains("allowed 0 < value <= 1e4"));
+    CHECK_THAT(r.err, Catch::Contains("allowed 0.05 <= value <= 1e4"));
     CHECK(r.err.size() < 200);
     CHECK_FALSE(fs::exists(out));
   }
@@ -287,7 +287,7 @@ TEST_CASE("every refusal exits 2 with its message and writes nothing", "[app][cl
       {"mill", "diameter_m", "diameter_m = 40.0", "out of range"},
       {"mill", "speed_rpm", "speed_rpm = 14.0", "centrifuges"},
       {"mill", "rotation", "rotation = \"sideways\"", "one of \"ccw\", \"cw\""},
-      {"charge", "filling", "filling = 0.5", "0 < value < 0.5"},
+      {"charge", "filling", "filling = 0.5", "0.01 <= value < 0.5"},
       {"charge", "filling", "filling = 0.0", "out of range"},
       {"charge", "ball_filling", "ball_filling = 0.3", "larger than filling"},
       {"charge", "ball_diameter_m", "ball_diameter_m = 0.3", "spacing between lifters"},

@@ -114,7 +114,7 @@ TEST_CASE("syntax, unknown keys, types, ranges and missing keys are refused with
   refused(edited("mill", "rotation", "1"), {"rotation", "expected a string", "\"ccw\", \"cw\""});
   refused(edited("mill", "rotation", "\"left\""), {"rotation = \"left\"", "one of \"ccw\", \"cw\""});
   refused(edited("mill", "diameter_m", "-3.0"), {"diameter_m = -3:", "out of range", "0.1 < value <= 15 m"});
-  refused(edited("charge", "filling", "0.5"), {"filling = 0.5", "0 < value < 0.5"});
+  refused(edited("charge", "filling", "0.5"), {"filling = 0.5", "0.01 <= value < 0.5"});
   refused(edited("charge", "filling", "0.0"), {"filling = 0:", "out of range"});
   refused(edited("model", "time_step_s", "-0.01"), {"time_step_s = -0.01", "out of range"});
   refused(edited("model", "variant", "1.2"), {"variant", "expected a string"});
