@@ -13,6 +13,7 @@
 #include "geometry/build_liner_surface.h"
 #include "geometry/errors.h"
 #include "geometry/input_file.h"
+#include "geometry/input_text.h"
 #include "geometry/measured_profile.h"
 #include "geometry/metrics.h"
 #include "forecast/calendar.h"
@@ -351,10 +352,12 @@ Config load_config_text(const std::string& text, const std::string& source, cons
       std::string list;
       for (auto& s : schema.sections) list += (list.empty() ? "[" : ", [") + s + "]";
       throw InputError(sname, fmt::format("{}:{}: unknown section or top-level key \"{}\"; the sections are {}", source,
-                                          sline, sname, list));
+                                          sline, printable(sname), list));
     }
     const toml::table* t = snode.as_table();
-    if (!t) throw InputError(sname, fmt::format("{}:{}: \"{}\" must be a section [{}]", source, sline, sname, sname));
+    if (!t)
+      throw InputError(sname, fmt::format("{}:{}: \"{}\" must be a section [{}]", source, sline, printable(sname),
+                                          printable(sname)));
     c.section_lines[sname] = sline;
     for (auto&& [kkey, knode] : *t) {
       const std::string kname(kkey.str());
@@ -366,7 +369,8 @@ Config load_config_text(const std::string& text, const std::string& source, cons
         for (const auto& k : schema.keys)
           if (k.section == sname) list += (list.empty() ? "" : ", ") + k.name;
         throw InputError(full, fmt::format("{}:{}: unknown key [{}] {} (a misspelling?); the keys of [{}] are: {}",
-                                           source, line, sname, kname, sname, list.empty() ? "(none yet)" : list));
+                                           source, line, sname, printable(kname), sname,
+                                           list.empty() ? "(none yet)" : list));
       }
       ConfigValue v;
       bool ok = false;
@@ -379,7 +383,14 @@ Config load_config_text(const std::string& text, const std::string& source, cons
           if (auto i = knode.as_integer()) { v = ConfigValue::Int(i->get()); ok = true; }
           break;
         case ConfigValue::Kind::String:
-          if (auto s = knode.as_string()) { v = ConfigValue::String(s->get()); ok = true; }
+          if (auto s = knode.as_string()) {
+            // a NUL would cut a path short (profile_csv = "a.csv\0x" opened a.csv) and a message
+            if (s->get().find('\0') != std::string::npos)
+              throw InputError(full, fmt::format("{}:{}: [{}] {} = \"{}\": a NUL byte (\\x00) is not allowed in a string",
+                                                 source, line, sname, kname, printable(s->get())));
+            v = ConfigValue::String(s->get());
+            ok = true;
+          }
           break;
         case ConfigValue::Kind::Date:
           if (auto d = knode.as_date()) {
@@ -401,7 +412,7 @@ Config load_config_text(const std::string& text, const std::string& source, cons
       }
       if (!ok)
         throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: expected {} ({})", source, line, sname, kname,
-                                           node_text(knode), kind_name(spec->kind), spec->allowed()));
+                                           printable(node_text(knode)), kind_name(spec->kind), spec->allowed()));
       const bool numeric = spec->kind == ConfigValue::Kind::Real || spec->kind == ConfigValue::Kind::Int;
       const double num = spec->kind == ConfigValue::Kind::Int ? static_cast<double>(v.integer) : v.real;
       if (numeric && !in_range(*spec, num))
@@ -411,8 +422,8 @@ Config load_config_text(const std::string& text, const std::string& source, cons
         bool found = false;
         for (auto& ch : spec->choices) found |= ch == v.text;
         if (!found)
-          throw InputError(full, fmt::format("{}:{}: [{}] {} = \"{}\": allowed {}", source, line, sname, kname, v.text,
-                                             spec->allowed()));
+          throw InputError(full, fmt::format("{}:{}: [{}] {} = \"{}\": allowed {}", source, line, sname, kname,
+                                             printable(v.text), spec->allowed()));
       }
       c.key_lines[full] = line;
       spec->set(c, v);

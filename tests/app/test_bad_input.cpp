@@ -785,3 +785,34 @@ TEST_CASE("a reader that closes the pipe gets exit 1 and a message, not a silent
   CHECK_THAT(read_file(err.string()), Catch::Contains("linerlife: error: cannot write to the standard output"));
   fs::remove_all(dir);
 }
+
+// Found by the review of 2026-12-04: a NUL in a string cut a path short
+// (profile_csv = "p.csv\0garbage" opened p.csv) or a message; a 1 MB value
+// was echoed whole, escape sequences and all.
+TEST_CASE("strings with a NUL are refused and values are quoted printable and short", "[app][cli][input]") {
+  const fs::path dir = temp_dir("nul_strings");
+  write_file(dir / "p.csv", "x_m,y_m\n0,0.075\n0.25,0.3\n0.508618,0.075\n");
+  struct Case {
+    std::string text;
+    std::vector<std::string> says;
+  };
+  const std::vector<Case> cases = {
+      {"[liner]\nprofile_csv = \"p.csv\\u0000garbage\"\n",
+       {"c.toml:2: [liner] profile_csv = \"p.csv\\x00garbage\": a NUL byte (\\x00) is not allowed in a string"}},
+      {"[mill]\nrotation = \"ccw\\u0000x\"\n", {"[mill] rotation = \"ccw\\x00x\": a NUL byte (\\x00) is not allowed"}},
+      {"[mill]\n\"a\\u0000b\" = 3\n", {"c.toml:2: unknown key [mill] a\\x00b (a misspelling?)"}},
+      {"[mill]\nrotation = \"" + std::string(100000, 'x') + "\\u001b[31m\"\n",
+       {"[mill] rotation = \"xxxx", "... (100005 bytes)\": allowed one of \"ccw\", \"cw\""}},
+  };
+  for (const Case& c : cases) {
+    write_file(dir / "c.toml", c.text);
+    const RunResult r = run_linerlife("geometry " + (dir / "c.toml").string() + " --out " + (dir / "out").string());
+    INFO(r.err.substr(0, 400));
+    CHECK(r.code == 2);
+    for (const std::string& s : c.says) CHECK_THAT(r.err, Catch::Contains(s));
+    CHECK(r.err.size() < 600);
+    CHECK(r.err.find('\x1b') == std::string::npos);
+    CHECK_FALSE(fs::exists(dir / "out"));
+  }
+  fs::remove_all(dir);
+}
