@@ -144,6 +144,9 @@ ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& c
   ForecastCheckpoint c;
   c.method = h5.attr_string(g, "method");
   c.t_s = h5.attr_double(g, "t_s");
+  for (const char* flag : {"have_prev", "has_indicators"})
+    if (const long long v = h5.attr_int(g, flag); v != 0 && v != 1)
+      throw damaged(flag, fmt::format("{}; allowed 0 or 1", v));
   c.have_prev = h5.attr_int(g, "have_prev") != 0;
   c.next_regular_s = h5.attr_double(g, "next_regular_s");
   c.next_extra = h5.attr_int(g, "next_extra");

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -117,6 +118,9 @@ class DayWalk {
 }  // namespace
 
 double Calendar::calendar_days_for(double operating_hours) const {
+  // (a NaN walked the calendar without end: a damaged checkpoint's history, 2026-12-04)
+  if (!std::isfinite(operating_hours))
+    throw std::invalid_argument(fmt::format("calendar: {} operating hours", operating_hours));
   if (operating_hours <= 0) return 0;
   DayWalk walk(*this);
   double left = operating_hours;

@@ -1005,6 +1005,13 @@ CheckpointProblem checkpoint_problem(const ForecastCheckpoint& c, const Forecast
     for (double x : *v.v)
       if (!std::isfinite(x) || (v.rate && x < 0))
         return bad(v.name, fmt::format("a value {}; must be finite{}", x, v.rate ? " and >= 0" : ""));
+    // depths (against the stored ring; y_prev can be below 0 after a remesh)
+    // never reach across the shell
+    if (!v.rate)
+      for (double x : *v.v)
+        if (!(std::abs(x) <= b.shell_radius_m))
+          return bad(v.name, fmt::format("a depth of {} m; allowed at most the shell radius ({} m) either way", x,
+                                         b.shell_radius_m));
   }
   const double horizon = spec.max_operating_hours * 3600.0;
   if (!(c.t_s >= 0 && c.t_s <= horizon))
@@ -1021,6 +1028,62 @@ CheckpointProblem checkpoint_problem(const ForecastCheckpoint& c, const Forecast
   if (c.history.size() != c.profiles.size())
     return bad("profile_hours", fmt::format("{} profiles for {} history records; one each expected",
                                             c.profiles.size(), c.history.size()));
+  // The history so far (a NaN hour once crashed the resumed run's calendar):
+  // hours from 0 up to the checkpoint's time, in order; the gauges finite and
+  // inside the shell; the indicators finite or NaN (a drive without them).
+  const double R = b.shell_radius_m, t_h = c.t_s / 3600.0;
+  for (size_t i = 0; i < c.history.size(); ++i) {
+    const double h = c.history[i].hours, prev = i == 0 ? 0.0 : c.history[i - 1].hours;
+    if (!(h >= prev && h <= t_h * (1 + 1e-12) + 1e-9))
+      return bad("history_hours", fmt::format("record {} at {} h after {} h; allowed in order from 0 to the "
+                                              "checkpoint's {} h",
+                                              i, h, prev, t_h));
+  }
+  for (size_t i = 0; i < c.history.size(); ++i) {
+    const LifeRecord& r = c.history[i];
+    if (!(c.profiles[i].hours == r.hours))
+      return bad("profile_hours", fmt::format("profile {} at {} h; its history record is at {} h", i,
+                                              c.profiles[i].hours, r.hours));
+    for (const Eigen::Vector2d& q : c.profiles[i].nodes)
+      if (!q.allFinite()) return bad("profile_nodes", fmt::format("profile {}: a coordinate that is not a finite number", i));
+    struct Gauge {
+      const char* name;
+      double v;
+    };
+    for (const Gauge& g : {Gauge{"history_lifter_height_m", r.lifter_height_m},
+                           Gauge{"history_crest_thickness_m", r.crest_thickness_m},
+                           Gauge{"history_min_thickness_m", r.min_thickness_m}})
+      if (!(std::abs(g.v) <= R))
+        return bad(g.name, fmt::format("record {}: {} m; allowed a finite length within the shell radius ({} m)", i,
+                                       g.v, R));
+    if (!(r.liner_mass_kg_per_m >= 0 && std::isfinite(r.liner_mass_kg_per_m)))
+      return bad("history_liner_mass_kg_per_m", fmt::format("record {}: {} kg/m; allowed finite and >= 0", i,
+                                                            r.liner_mass_kg_per_m));
+    for (const Gauge& g : {Gauge{"history_face_angle_leading_deg", r.face_angle_leading_deg},
+                           Gauge{"history_face_angle_trailing_deg", r.face_angle_trailing_deg},
+                           Gauge{"history_top_width_m", r.top_width_m}, Gauge{"history_net_power_kw", r.net_power_kw},
+                           Gauge{"history_toe_deg", r.toe_deg}, Gauge{"history_shoulder_deg", r.shoulder_deg},
+                           Gauge{"history_direct_impact_fraction", r.direct_impact_fraction},
+                           Gauge{"history_impact_fraction", r.impact_fraction}})
+      if (std::isinf(g.v) || std::abs(g.v) > 1e9)
+        return bad(g.name, fmt::format("record {}: {}; allowed a finite value of at most 1e9 (or NaN: not known)", i, g.v));
+  }
+  for (double x : {c.net_power_kw, c.toe_deg, c.shoulder_deg, c.direct_impact_fraction, c.impact_fraction})
+    if (std::isinf(x) || std::abs(x) > 1e9)
+      return bad("net_power_kw", fmt::format("the last drive's indicators hold {}; allowed finite values of at most "
+                                             "1e9 (net_power_kw, toe_deg, shoulder_deg, *_fraction; or NaN)",
+                                             x));
+  if (c.has_indicators && !std::isfinite(c.net_power_kw))
+    return bad("net_power_kw", fmt::format("{} with has_indicators; must be a finite number", c.net_power_kw));
+  for (double x : {c.stats.wall_s, c.stats.charge_wall_s, c.stats.charge_simulated_s})
+    if (!(x >= 0 && std::isfinite(x)))
+      return bad("stats_double", fmt::format("a value {}; allowed finite and >= 0", x));
+  for (long long x : {static_cast<long long>(c.stats.charge_redrives), static_cast<long long>(c.stats.remeshes),
+                      c.stats.cvode_steps, c.stats.rhs_evals, c.stats.error_test_failures, c.stats.nonlinear_failures,
+                      static_cast<long long>(c.stats.explicit_steps)})
+    if (x < 0) return bad("stats_int", fmt::format("a count of {}; allowed >= 0", x));
+  if (!(c.provider_drives >= 0 && c.provider_drives <= (1LL << 40)))
+    return bad("provider_drives", fmt::format("{}; allowed 0 to 2^40", c.provider_drives));
   return {};
 }
 

@@ -275,6 +275,21 @@ TEST_CASE("a damaged checkpoint is refused naming the file and the dataset and n
       {"v = c['base_segment_design'][:-1]; del c['base_segment_design']; c['base_segment_design'] = v",
        "/checkpoint/base_segment_design"},
       {"c.attrs['next_extra'] = 5", "/checkpoint@next_extra"},
+      // found by a review (2026-12-04): a NaN hour crashed the resumed run
+      // (SIGSEGV in the calendar, a temporary left); the others ran to exit 0
+      // with a liner of -11.8 m, a history out of order, or null statistics
+      {"v = c['history_hours'][()]; v[3] = float('nan'); c['history_hours'][...] = v", "/checkpoint/history_hours"},
+      {"v = c['history_hours'][()]; c['history_hours'][...] = v[::-1]", "/checkpoint/history_hours"},
+      {"v = c['y'][()]; v[:] = 10.0; c['y'][...] = v", "/checkpoint/y"},
+      {"v = c['history_lifter_height_m'][()]; v[3] = 1e300; c['history_lifter_height_m'][...] = v",
+       "/checkpoint/history_lifter_height_m"},
+      {"v = c['history_net_power_kw'][()]; v[2] = float('inf'); c['history_net_power_kw'][...] = v",
+       "/checkpoint/history_net_power_kw"},
+      {"c.attrs['net_power_kw'] = float('nan')", "/checkpoint@net_power_kw"},
+      {"v = c['stats_double'][()]; v[0] = float('nan'); c['stats_double'][...] = v", "/checkpoint/stats_double"},
+      {"v = c['stats_int'][()]; v[4] = -5; c['stats_int'][...] = v", "/checkpoint/stats_int"},
+      {"c.attrs['provider_drives'] = -7", "/checkpoint@provider_drives"},
+      {"c.attrs['have_prev'] = 7", "/checkpoint@have_prev"},
   };
   for (const auto& [damage, name] : cases) {
     INFO("damage: " << damage);
