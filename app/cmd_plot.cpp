@@ -75,7 +75,8 @@ int run_plot(const PlotOptions& o) {
     throw InputError(o.file, fmt::format("results file {} is damaged or incomplete: it lacks a group, dataset or "
                                          "attribute a {} results file has (above)", o.file, kind));
   if (rc == 4)
-    throw InputError(o.file, fmt::format("results file {} is damaged: dataset {}; allowed only finite numbers there "
+    throw InputError(o.file, fmt::format("results file {} is damaged: dataset {}; allowed only finite numbers there, "
+                                         "of magnitude at most 1e12, "
                                          "in a {} results file: nothing drawn", o.file, report, kind));
   if (rc == 5)  // a chart could not be written there (a folder of its name, a full disk)
     throw InputError(out.dir(), fmt::format("charts not drawn in {}: {}", out.dir(), report));

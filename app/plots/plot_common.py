@@ -12,9 +12,15 @@ class NotFinite(Exception):
         self.path, self.detail = path, detail
 
 
+# No quantity a results file draws comes near this (lengths of metres, hours
+# up to 1e5, tonnes up to 1e9); a node at 1e155 m made matplotlib fail with a
+# singular matrix and a traceback (a review, 2026-12-04).
+LARGEST_PLAUSIBLE = 1e12
+
+
 def check_finite(h5, paths):
-    """Raises NotFinite for the first of the datasets `paths` that holds a value that is not a finite number.
-    Datasets the file lacks are left to draw(), whose KeyError names them."""
+    """Raises NotFinite for the first of the datasets `paths` that holds a value that is not a finite number,
+    or one beyond +-LARGEST_PLAUSIBLE. Datasets the file lacks are left to draw(), whose KeyError names them."""
     for path in paths:
         if path not in h5:
             continue
@@ -27,6 +33,12 @@ def check_finite(h5, paths):
             where = ", ".join(str(i) for i in first)
             raise NotFinite(path, f"{int(bad.sum())} of {v.size} values are not finite numbers (the first, "
                                   f"{v[first]}, at [{where}])")
+        huge = np.abs(v) > LARGEST_PLAUSIBLE
+        if huge.any():
+            first = tuple(int(i) for i in np.argwhere(huge)[0])
+            where = ", ".join(str(i) for i in first)
+            raise NotFinite(path, f"{int(huge.sum())} of {v.size} values are beyond +-{LARGEST_PLAUSIBLE:g}, which "
+                                  f"no results file holds (the first, {v[first]:g}, at [{where}])")
 
 
 def surface_datasets(group):

@@ -215,6 +215,10 @@ TEST_CASE("plot refuses a results file whose drawn data hold NaN or infinite val
       {dir / "run" / "forecast.h5", "v = f['/forecast/history/hours']; v[1] = float('inf')",
        "/forecast/history/hours: 1 of "},
       {dir / "geo" / "geometry.h5", "v = f['/surface/nodes']; v[0, 0] = float('-inf')", "/surface/nodes: 1 of "},
+      // finite but absurd: matplotlib failed with a singular matrix, a traceback and exit 1 (a review, 2026-12-04)
+      {dir / "run" / "forecast.h5", "v = f['/forecast/profiles/nodes']; v[1, 0] = 1e155",
+       "/forecast/profiles/nodes: 1 of 360 values are beyond +-1e+12, which no results file holds (the first, 1e+155, "
+       "at [1, 0])"},
   };
   for (const Damage& c : cases) {
     INFO(c.python);
