@@ -106,22 +106,25 @@ void add_forecast_keys(Schema& s) {
   K.push_back(real_key("forecast", "throughput_t_per_h", "t/h", "Ore throughput while running (for tonnes per liner)",
                        0.0, 1e5, false, false, 0.0, [](Config& c, double v) { c.forecast.throughput_t_per_h = v; },
                        [](const Config& c) { return c.forecast.throughput_t_per_h; }));
-  K.push_back(real_key("forecast", "amplification", "-", "Amplify method: wear multiplier A (thesis Table B.1)", 1.0,
+  // (the floors of amplification, euler_step_h and output_interval_h keep a
+  // run finite: 1, 1e-6 h and 1e-6 h ran without end or out of memory; the
+  // studies of docs/validation/forecast.md use A >= 1e5, steps >= 50 h)
+  K.push_back(real_key("forecast", "amplification", "-", "Amplify method: wear multiplier A (thesis Table B.1)", 1e3,
                        1e12, false, false, 1e7, [](Config& c, double v) { c.forecast.amplification = v; },
                        [](const Config& c) { return c.forecast.amplification; }));
   K.push_back(real_key("forecast", "amplify_revolutions", "rev",
                        "Amplify method: revolutions simulated per step (Qiu 2001: about 1.5)", 0.0, 100.0, true, false,
                        1.5, [](Config& c, double v) { c.forecast.amplify_revolutions = v; },
                        [](const Config& c) { return c.forecast.amplify_revolutions; }));
-  K.push_back(real_key("forecast", "euler_step_h", "h", "Euler method: fixed step", 0.0, 10000.0, true, false, 100.0,
+  K.push_back(real_key("forecast", "euler_step_h", "h", "Euler method: fixed step", 1.0, 10000.0, false, false, 100.0,
                        [](Config& c, double v) { c.forecast.euler_step_h = v; },
                        [](const Config& c) { return c.forecast.euler_step_h; }));
   K.push_back(real_key("forecast", "checkpoint_interval_s", "s",
                        "Wall time between checkpoints of a forecast run with --out (0: after every charge drive)", 0.0,
                        86400.0, false, false, 60.0, [](Config& c, double v) { c.forecast.checkpoint_interval_s = v; },
                        [](const Config& c) { return c.forecast.checkpoint_interval_s; }));
-  K.push_back(real_key("forecast", "output_interval_h", "h", "History and profile snapshots at least this often", 0.0,
-                       1e5, true, false, 100.0, [](Config& c, double v) { c.forecast.output_interval_h = v; },
+  K.push_back(real_key("forecast", "output_interval_h", "h", "History and profile snapshots at least this often", 10.0,
+                       1e5, false, false, 100.0, [](Config& c, double v) { c.forecast.output_interval_h = v; },
                        [](const Config& c) { return c.forecast.output_interval_h; }));
 }
 

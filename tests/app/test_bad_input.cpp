@@ -250,6 +250,13 @@ TEST_CASE("values that hung, ran out of memory or failed inside are refused at t
       // exit 3 blaming the amplification for an infinite wear rate
       {"hardness_bhn = ", "hardness_bhn = 1e-300", "wear --revolutions 0.1",
        {"[liner] hardness_bhn = 1e-300: out of range; allowed 10 <= value <= 1000 BHN"}},
+      // ran out of memory (output_interval_h) or without end (the reference methods)
+      {"output_interval_h = ", "output_interval_h = 1e-6", "geometry",
+       {"[forecast] output_interval_h = 1e-06: out of range; allowed 10 <= value <= 100000 h"}},
+      {"euler_step_h = ", "euler_step_h = 1e-6", "geometry",
+       {"[forecast] euler_step_h = 1e-06: out of range; allowed 1 <= value <= 10000 h"}},
+      {"amplification = ", "amplification = 1", "geometry",
+       {"[forecast] amplification = 1: out of range; allowed 1000 <= value <= 1000000000000"}},
       // exit 0 with no wear (a drive shorter than a step averages nothing)
       {"drive_revolutions = ", "drive_revolutions = 1e-300", "wear --revolutions 0.2",
        {"[wear] drive_revolutions = 1e-300: out of range; allowed 0.05 <= value <= 1000"}},
@@ -360,6 +367,11 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
       {"compare --vary liner.lifter_height_m=0.23,0.25 --vary liner.face_angle_leading_deg=20,-5" + o,
        {"--vary liner.lifter_height_m=0.23 --vary liner.face_angle_leading_deg=-5: ", "face_angle_leading_deg = -5"}},
       {"compare --vary liner.lifter_height_m=0.23,0.25 --jobs -1" + o, {"--jobs -1", "allowed 1 <= value"}},
+      // 8 million cases filled the memory before the first ran
+      {"compare --vary liner.face_angle_leading_deg=10,11,12,13,14,15,16,17,18,19,20 --vary "
+       "liner.lifter_height_m=0.20,0.21,0.22,0.23,0.24,0.25,0.26,0.27,0.28,0.29,0.30 --vary "
+       "mill.speed_fraction_critical=0.70,0.71,0.72,0.73,0.74,0.75,0.76,0.77,0.78" + o,
+       {"--vary: 11 x 11 x 9 = 1089 cases; allowed at most 1000 (each is a whole forecast)"}},
       // a string key's values need no quotes (they were a TOML syntax error blamed on the configuration)
       {"compare --vary mill.rotation=ccw,sideways" + o,
        {"--vary mill.rotation=sideways: [mill] rotation = \"sideways\": allowed one of \"ccw\", \"cw\""}},
