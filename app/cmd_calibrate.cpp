@@ -105,7 +105,7 @@ int run_calibrate(const CalibrateOptions& o) {
   check_fit_against_laws(ps, o.fit, c);
   // the finite differences: one forecast per parameter, and one more for the life's spread
   const int jobs = forecast_jobs(o.jobs, static_cast<int>(ps.size()) + 1, c.model.charge == "dem");
-  if (!o.out.empty()) check_output_dir_writable(o.out);
+  if (!o.out.empty()) check_output_dir_writable(o.out, {"calibrated.toml", "calibrate.h5"});
 
   std::array<bool, 3> fit_factors{false, false, false};  // centrifugal, gravitational, impact
   for (const Param& q : ps)

@@ -149,7 +149,7 @@ int run_charge(const ChargeOptions& o) {
   if (!o.model.empty()) c.model.charge = o.model;
   if (!o.variant.empty()) c.model.variant = o.variant;
   const ChargeModelEntry& entry = find_charge_model(c.model.charge);
-  if (!o.out.empty()) check_output_dir_writable(o.out);
+  if (!o.out.empty()) check_output_dir_writable(o.out, {"charge.h5"});
   const LinerSurface s = build_liner_surface(c.mill, c.liner);
   ChargeInput in;
   in.mill = c.mill;

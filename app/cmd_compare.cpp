@@ -181,7 +181,7 @@ int run_compare(const CompareOptions& o) {
   for (const Case& k : cases) dem = dem || k.config.model.charge == "dem";
   const int n = static_cast<int>(cases.size());
   const int jobs = forecast_jobs(o.jobs, n, dem);
-  if (!o.out.empty()) check_output_dir_writable(o.out);
+  if (!o.out.empty()) check_output_dir_writable(o.out, {"compare.h5"});
   // set every case up before running any, so a bad one is refused at once
   std::vector<ForecastSetup> setups;
   for (Case& k : cases) {

@@ -74,7 +74,7 @@ int run_forecast_command(const ForecastOptions& o) {
                         : o.method == "euler" ? ForecastMethod::Euler
                                               : ForecastMethod::Ode;
   if (o.resume && o.out.empty()) throw InputError("--resume", "--resume continues the run in an --out DIR: give --out");
-  if (!o.out.empty()) check_output_dir_writable(o.out);
+  if (!o.out.empty()) check_output_dir_writable(o.out, {"forecast.h5", "checkpoint.h5"});
   ForecastSetup setup = make_forecast_setup(c);
   const std::string config_text = config_to_toml(c, false);
   // Fault injection for the tests of the failure path (docs/reliability.md):

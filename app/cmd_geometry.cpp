@@ -27,7 +27,7 @@ std::string fmt_opt(double v, const char* f) { return std::isfinite(v) ? fmt::fo
 
 int run_geometry(const GeometryOptions& o) {
   const Config c = load_config_or_default(o.config);
-  if (!o.out.empty()) check_output_dir_writable(o.out);
+  if (!o.out.empty()) check_output_dir_writable(o.out, {"geometry.h5"});
   const LinerSurface s = build_liner_surface(c.mill, c.liner);
   const LinerMetrics m = metrics(s, c.mill.rotation, c.liner.density_kg_m3);
   const SegmentMetrics& s0 = m.segments[0];

@@ -74,7 +74,7 @@ int run_wear_command(const WearOptions& o) {
   const ChargeModelEntry& entry = find_charge_model(c.model.charge);
   make_wear_model(c.wear, entry);  // the law-model combination, before any work
   warn_wear_loads(c);
-  if (!o.out.empty()) check_output_dir_writable(o.out);
+  if (!o.out.empty()) check_output_dir_writable(o.out, {"wear.h5"});
 
   WearRunInput in;
   in.mill = mill;

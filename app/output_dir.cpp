@@ -17,9 +17,16 @@ namespace linerlife {
 
 namespace fs = std::filesystem;
 
-void check_output_dir_writable(const std::string& dir) {
+void check_output_dir_writable(const std::string& dir, const std::vector<std::string>& names) {
   std::error_code ec;
   if (dir.empty()) throw InputError("--out", "--out \"\": give a folder");
+  for (const std::string& n : names) {
+    const fs::path f = fs::path(dir) / n;
+    if (fs::exists(fs::symlink_status(f, ec)) && !fs::is_regular_file(f, ec))
+      throw InputError(dir, fmt::format("output folder {} holds {}, which is not a file: the results go there; move "
+                                        "it or choose another folder",
+                                        dir, f.string()));
+  }
   fs::path p = fs::absolute(dir, ec);
   if (fs::is_symlink(fs::symlink_status(p, ec)) && !fs::exists(p, ec))
     throw InputError(dir, fmt::format("output folder {} is a link to {}, which does not exist", dir,

@@ -42,7 +42,10 @@ class OutputDir {
 
 /// Checks before any work starts that `dir` could be created and written
 /// (an existing folder must be writable; otherwise its nearest existing
-/// parent must be). Throws InputError; creates nothing.
-void check_output_dir_writable(const std::string& dir);
+/// parent must be), and that none of the files the command writes there
+/// (`names`) is taken by something that is not a file (a folder of that
+/// name failed the run with exit 1 after all its work). Throws InputError;
+/// creates nothing.
+void check_output_dir_writable(const std::string& dir, const std::vector<std::string>& names = {});
 
 }  // namespace linerlife

@@ -690,6 +690,22 @@ TEST_CASE("an output folder that cannot be written, or a checkpoint that is not 
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Contains("output folder " + (dir / "afile").string() + " exists and is not a folder"));
   CHECK(read_file((dir / "afile").string()) == "x");
+  // a folder where a results file goes: refused before the work (a review: the
+  // whole forecast ran, then exit 1 "cannot rename ... Is a directory")
+  for (const auto& [cmd, name] : std::vector<std::pair<std::string, std::string>>{
+           {"forecast --quiet", "forecast.h5"}, {"forecast --quiet", "checkpoint.h5"}, {"geometry", "geometry.h5"},
+           {"charge", "charge.h5"}, {"wear", "wear.h5"}}) {
+    const fs::path taken = dir / "taken";
+    fs::remove_all(taken);
+    fs::create_directories(taken / name);
+    r = run_linerlife(cmd + " --out " + taken.string(), 30);
+    INFO(cmd << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("output folder " + taken.string() + " holds " + (taken / name).string() +
+                                      ", which is not a file: the results go there"));
+    CHECK(r.out.empty());
+    CHECK(std::distance(fs::directory_iterator(taken), fs::directory_iterator()) == 1);
+  }
   // --out names a folder inside a file: said so (not "not writable"), the file untouched
   r = run_linerlife("geometry --out " + (dir / "afile" / "sub").string());
   CHECK(r.code == 2);
