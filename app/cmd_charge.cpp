@@ -251,9 +251,7 @@ int run_charge(const ChargeOptions& o) {
     write_charge_h5(tmp, c, s, in, r);
     dir.commit(tmp, "charge.h5");
     const bool charts = draw_charts("charge", dir.path("charge.h5"), dir.dir());
-    if (!o.json)
-      std::cout << fmt::format("Wrote {}{} in {}{}\n", dir.path("charge.h5"), charts ? " and charts" : "", dir.dir(),
-                               charts ? "" : " (no charts: see the warning above)");
+    if (!o.json) print_written(dir.path("charge.h5"), dir.dir(), charts);
   }
   return 0;
 }

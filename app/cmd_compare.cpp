@@ -327,9 +327,7 @@ int run_compare(const CompareOptions& o) {
     }
     dir.commit(tmp, "compare.h5");
     const bool charts = draw_charts("compare", dir.path("compare.h5"), dir.dir());
-    if (!o.json)
-      std::cout << fmt::format("Wrote {}{} in {}{}\n", dir.path("compare.h5"), charts ? " and charts" : "", dir.dir(),
-                               charts ? "" : " (no charts: see the warning above)");
+    if (!o.json) print_written(dir.path("compare.h5"), dir.dir(), charts);
   }
   return 0;
 }

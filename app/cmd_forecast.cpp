@@ -249,9 +249,7 @@ int run_forecast_command(const ForecastOptions& o) {
     dir->commit(tmp, "forecast.h5");
     std::filesystem::remove(dir->path("checkpoint.h5"));  // the run is complete
     const bool charts = draw_charts("forecast", dir->path("forecast.h5"), dir->dir());
-    if (!o.json)
-      std::cout << fmt::format("Wrote {}{} in {}{}\n", dir->path("forecast.h5"), charts ? " and charts" : "", dir->dir(),
-                               charts ? "" : " (no charts: see the warning above)");
+    if (!o.json) print_written(dir->path("forecast.h5"), dir->dir(), charts);
   }
   return 0;
 }

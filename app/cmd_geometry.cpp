@@ -89,9 +89,7 @@ int run_geometry(const GeometryOptions& o) {
     }
     dir.commit(tmp, "geometry.h5");
     const bool charts = draw_charts("geometry", dir.path("geometry.h5"), dir.dir());
-    if (!o.json)
-      std::cout << fmt::format("Wrote {}{} in {}{}\n", dir.path("geometry.h5"), charts ? " and charts" : "", dir.dir(),
-                               charts ? "" : " (no charts: see the warning above)");
+    if (!o.json) print_written(dir.path("geometry.h5"), dir.dir(), charts);
   }
   return 0;
 }

@@ -137,9 +137,7 @@ int run_wear_command(const WearOptions& o) {
     write_wear_h5(tmp, c, j, r, abrasion_only ? &*abrasion_only : nullptr, impact_only ? &*impact_only : nullptr);
     dir.commit(tmp, "wear.h5");
     const bool charts = draw_charts("wear", dir.path("wear.h5"), dir.dir());
-    if (!o.json)
-      std::cout << fmt::format("Wrote {}{} in {}{}\n", dir.path("wear.h5"), charts ? " and charts" : "", dir.dir(),
-                               charts ? "" : " (no charts: see the warning above)");
+    if (!o.json) print_written(dir.path("wear.h5"), dir.dir(), charts);
   }
   return 0;
 }

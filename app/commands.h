@@ -39,6 +39,10 @@ CLI::Validator out_folder_check(const std::string& without);
 /// of a plain plate, a gauge of a worn-out lifter).
 std::string num(double v, const char* f);
 
+/// The summary's last line after a results file was written: "Wrote FILE and
+/// charts in DIR", or, where the charts failed (their warning above), says so.
+void print_written(const std::string& file, const std::string& dir, bool charts);
+
 /// Refuses an empty CONFIG argument (a script's unset variable), which would
 /// otherwise run the bundled mill as if no file had been given.
 CLI::Validator config_path_check();
@@ -78,12 +82,6 @@ class PercentLine {
 [[noreturn]] void rethrow_located(const Config& c, const InputError& e);
 /// The same error, located, without throwing it.
 InputError located(const Config& c, const InputError& e);
-
-/// The fewest mill revolutions a run may average over (--revolutions, [wear]
-/// revolutions and drive_revolutions): 18 deg of mill rotation, 9 of the layer
-/// model's 2-deg samples. A shorter window averages over a step or two, or
-/// none, and gives all-zero or undefined indicators (docs/reliability.md).
-constexpr double kMinRevolutions = 0.05;
 
 /// A --revolutions option's value: refused (InputError) unless
 /// kMinRevolutions <= n <= 1e4.

@@ -27,6 +27,11 @@ CLI::Validator out_folder_check(const std::string& without) {
 
 std::string num(double v, const char* f) { return std::isfinite(v) ? fmt::format(fmt::runtime(f), v) : "n/a"; }
 
+void print_written(const std::string& file, const std::string& dir, bool charts) {
+  std::cout << fmt::format("Wrote {}{} in {}{}\n", file, charts ? " and charts" : "", dir,
+                           charts ? "" : " (no charts: see the warning above)");
+}
+
 CLI::Validator config_path_check() {
   return CLI::Validator(
       [](std::string& path) -> std::string {

@@ -19,6 +19,12 @@
 
 namespace linerlife {
 
+/// The fewest mill revolutions a run may average over (--revolutions, [wear]
+/// revolutions and drive_revolutions): 18 deg of mill rotation, 9 of the layer
+/// model's 2-deg samples. A shorter window averages over a step or two, or
+/// none, and gives all-zero or undefined indicators (docs/reliability.md).
+constexpr double kMinRevolutions = 0.05;
+
 /// Everything a run is configured with, in SI units.
 struct Config {
   std::string source;    // the file it came from, or "bundled qiu2001_sag.toml"

@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 
 #include "app/config.h"
-#include "app/commands.h"
 #include "app/config_schema_util.h"
 #include "geometry/errors.h"
 #include "wear/recession.h"

@@ -1068,11 +1068,16 @@ CheckpointProblem checkpoint_problem(const ForecastCheckpoint& c, const Forecast
       if (std::isinf(g.v) || std::abs(g.v) > 1e9)
         return bad(g.name, fmt::format("record {}: {}; allowed a finite value of at most 1e9 (or NaN: not known)", i, g.v));
   }
-  for (double x : {c.net_power_kw, c.toe_deg, c.shoulder_deg, c.direct_impact_fraction, c.impact_fraction})
-    if (std::isinf(x) || std::abs(x) > 1e9)
-      return bad("net_power_kw", fmt::format("the last drive's indicators hold {}; allowed finite values of at most "
-                                             "1e9 (net_power_kw, toe_deg, shoulder_deg, *_fraction; or NaN)",
-                                             x));
+  struct Attr {
+    const char* name;
+    double v;
+  };
+  for (const Attr& a : {Attr{"net_power_kw", c.net_power_kw}, Attr{"toe_deg", c.toe_deg},
+                        Attr{"shoulder_deg", c.shoulder_deg}, Attr{"direct_impact_fraction", c.direct_impact_fraction},
+                        Attr{"impact_fraction", c.impact_fraction}})
+    if (std::isinf(a.v) || std::abs(a.v) > 1e9)
+      return bad(a.name, fmt::format("the last drive's {}; allowed a finite value of at most 1e9 (or NaN: not known)",
+                                     a.v));
   if (c.has_indicators && !std::isfinite(c.net_power_kw))
     return bad("net_power_kw", fmt::format("{} with has_indicators; must be a finite number", c.net_power_kw));
   for (double x : {c.stats.wall_s, c.stats.charge_wall_s, c.stats.charge_simulated_s})

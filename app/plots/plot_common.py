@@ -27,18 +27,15 @@ def check_finite(h5, paths):
         v = np.asarray(h5[path][()])
         if v.dtype.kind not in "fc":  # integers and strings are always finite
             continue
-        bad = ~np.isfinite(v)
-        if bad.any():
-            first = tuple(int(i) for i in np.argwhere(bad)[0])
-            where = ", ".join(str(i) for i in first)
-            raise NotFinite(path, f"{int(bad.sum())} of {v.size} values are not finite numbers (the first, "
-                                  f"{v[first]}, at [{where}])")
-        huge = np.abs(v) > LARGEST_PLAUSIBLE
-        if huge.any():
-            first = tuple(int(i) for i in np.argwhere(huge)[0])
-            where = ", ".join(str(i) for i in first)
-            raise NotFinite(path, f"{int(huge.sum())} of {v.size} values are beyond +-{LARGEST_PLAUSIBLE:g}, which "
-                                  f"no results file holds (the first, {v[first]:g}, at [{where}])")
+        with np.errstate(invalid="ignore"):
+            huge = np.abs(v) > LARGEST_PLAUSIBLE
+        for bad, what in ((~np.isfinite(v), "are not finite numbers"),
+                          (huge, f"are beyond +-{LARGEST_PLAUSIBLE:g}, which no results file holds")):
+            if bad.any():
+                first = tuple(int(i) for i in np.argwhere(bad)[0])
+                where = ", ".join(str(i) for i in first)
+                raise NotFinite(path, f"{int(bad.sum())} of {v.size} values {what} (the first, {v[first]:g}, at "
+                                      f"[{where}])")
 
 
 def surface_datasets(group):
