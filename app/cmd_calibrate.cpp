@@ -123,8 +123,34 @@ int run_calibrate(const CalibrateOptions& o) {
   p.measured = h;
   p.segments = c.liner.segments;
   p.jobs = jobs;
+  // The rest of the life is forecast from the last measured profile. Where
+  // it already meets a relining criterion, the liner is due now: said before
+  // the fit (which still gives the factors), and the remaining life is 0 h
+  // (before, the forecast from it refused the run after the fit, "at the
+  // start", naming neither the scan nor the criterion's line).
+  const MeasuredSnapshot& last = h.snapshots.back();
+  LinerDesign worn = c.liner;
+  worn.measured = true;
+  worn.hi_lo = false;  // refused above: a hi-lo ring cannot be rebuilt from one measured row
+  worn.profile.source = fmt::format("{} at {} h", o.measured, last.hours);
+  worn.profile.points = last.points;
+  auto worn_ring = std::make_shared<LinerSurface>(build_liner_surface(c.mill, worn));
+  const std::optional<MetCriterion> due = criterion_met(c, *worn_ring);
+  if (due) {
+    const double limit = due->key == "forecast.min_lifter_height_m"    ? c.forecast.min_lifter_height_m
+                         : due->key == "forecast.min_plate_thickness_m" ? c.forecast.min_plate_thickness_m
+                                                                        : c.forecast.max_face_angle_leading_deg;
+    std::string at = config_location(c, due->key);  // "FILE:LINE: "
+    at = at.substr(0, at.size() - 2);
+    note(fmt::format("linerlife: note: the last measured profile ({} at {} h) already meets the relining criterion {} "
+                     "({}; [forecast] {} = {} at {}): the liner is due for relining now, its remaining life 0 h; the "
+                     "fit goes on for the factors",
+                     o.measured, last.hours, due->name, due->gauges, due->key.substr(due->key.find('.') + 1), limit,
+                     at));
+  }
   if (!o.json) std::cerr << fmt::format("  fitting {} parameter(s) to {} profiles...\n", ps.size(), h.snapshots.size());
   const CalibrationResult r = calibrate(p);
+  require_converged(p, r);  // a stalled fit's factors are not a fit (exit 3)
 
   // the calibrated configuration
   Config cal = c;
@@ -134,16 +160,10 @@ int run_calibrate(const CalibrateOptions& o) {
   cal = config_with(cal, "wear.calibration_impact", fmt::format("{}", c.wear.calibration_impact * s[2]), "calibrate");
 
   // the rest of the life from the last measured profile
-  const MeasuredSnapshot& last = h.snapshots.back();
-  LinerDesign worn = c.liner;
-  worn.measured = true;
-  worn.hi_lo = false;  // refused above: a hi-lo ring cannot be rebuilt from one measured row
-  worn.profile.source = fmt::format("{} at {} h", o.measured, last.hours);
-  worn.profile.points = last.points;
-  auto worn_ring = std::make_shared<LinerSurface>(build_liner_surface(c.mill, worn));
   ForecastInput rest = setup.input;
   rest.initial = worn_ring.get();
-  const LifeQuantiles q = life_quantiles(r.params, r.covariance_log, p.make_provider, rest, c.forecast, jobs);
+  const LifeQuantiles q = due ? LifeQuantiles{0, 0, 0, 0, due->name, 0}
+                              : life_quantiles(r.params, r.covariance_log, p.make_provider, rest, c.forecast, jobs);
   const Calendar& cal_days = c.forecast.calendar;
   auto date = [&](double remaining_h) { return iso_date(cal_days.date_after(last.hours + remaining_h)); };
 
@@ -185,9 +205,13 @@ int run_calibrate(const CalibrateOptions& o) {
                              cal.wear.calibration_impact);
     std::cout << fmt::format("  RMS misfit {:.2f} mm (was {:.2f} mm with the given factors); {} forecasts\n",
                              1000 * r.rms_m, 1000 * r.rms_initial_m, r.forecasts);
-    std::cout << fmt::format("  remaining life from {} h: P10 {:.0f} h ({}), P50 {:.0f} h ({}), P90 {:.0f} h ({}); {}\n",
-                             last.hours, q.p10_h, date(q.p10_h), q.p50_h, date(q.p50_h), q.p90_h, date(q.p90_h),
-                             q.criterion);
+    if (due)
+      std::cout << fmt::format("  remaining life from {} h: 0 h, due now ({}): the last measured profile meets {}\n",
+                               last.hours, date(0), q.criterion);
+    else
+      std::cout << fmt::format("  remaining life from {} h: P10 {:.0f} h ({}), P50 {:.0f} h ({}), P90 {:.0f} h ({}); {}\n",
+                               last.hours, q.p10_h, date(q.p10_h), q.p50_h, date(q.p50_h), q.p90_h, date(q.p90_h),
+                               q.criterion);
   }
 
   if (!o.out.empty()) {
@@ -240,7 +264,8 @@ void register_calibrate(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--out", o->out, "Write calibrated.toml, calibrate.h5 and charts into this folder")
       ->check(out_folder_check("without --out nothing is written"));
   cmd->add_option("--jobs", o->jobs, "Forecasts run at once for the finite differences (default: one per core; one "
-                                     "at a time with the DEM)");
+                                     "at a time with the DEM)")
+      ->check(decimal_check(true));
   cmd->callback([&run, o] { run = [o] { return run_calibrate(*o); }; });
 }
 

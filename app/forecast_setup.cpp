@@ -107,30 +107,14 @@ namespace {
 /// forecast the first case for 14 s before refusing the second).
 /// Returns the warning for criteria given that cannot apply ("" if none).
 std::string check_start_criteria(const Config& c, const LinerSurface& ring) {
+  if (const auto met = criterion_met(c, ring))
+    throw located(c, InputError(met->key, fmt::format("the liner already meets the relining criterion {} at the start "
+                                                      "({}): nothing to forecast; check the [forecast] criteria "
+                                                      "against the liner",
+                                                      met->name, met->gauges)));
   const ForecastSpec& f = c.forecast;
-  const int period = pattern_period(ring);
   const SegmentMetrics lifter = segment_metrics(ring, 0, c.mill.rotation, c.liner.density_kg_m3);
-  double thinnest = lifter.min_thickness_m;
-  for (int k = 1; k < period; ++k)
-    thinnest = std::min(thinnest, segment_metrics(ring, k, c.mill.rotation, c.liner.density_kg_m3).min_thickness_m);
   const bool has = lifter.has_lifter;
-  const double face = lifter.face_angle_leading_deg;
-  constexpr double kWornThroughM = 2e-4;  // forecast.cpp's: the remesh holds nodes 1e-4 m off the shell
-  const std::array<std::pair<const char*, bool>, 4> met = {{
-      {"min_lifter_height", has && lifter.lifter_height_m <= f.min_lifter_height_m},
-      {"min_plate_thickness", thinnest <= f.min_plate_thickness_m},
-      {"max_face_angle_leading", has && !std::isnan(face) && face >= f.max_face_angle_leading_deg},
-      {"worn_through", thinnest <= kWornThroughM},
-  }};
-  const std::array<const char*, 4> keys = {"forecast.min_lifter_height_m", "forecast.min_plate_thickness_m",
-                                           "forecast.max_face_angle_leading_deg", "forecast.min_plate_thickness_m"};
-  for (size_t i = 0; i < met.size(); ++i)
-    if (met[i].second)
-      throw located(c, InputError(keys[i], fmt::format("the liner already meets the relining criterion {} at the start "
-                                                       "(lifter height {:.4f} m, thinnest point {:.4f} m, leading face "
-                                                       "{:.2f} deg): nothing to forecast; check the [forecast] criteria "
-                                                       "against the liner",
-                                                       met[i].first, lifter.lifter_height_m, thinnest, face)));
   // A liner without a lifter (a plain plate, or a measured profile with none)
   // has no lifter to wear down: a height or face criterion given for it is
   // ignored, which is said, as a warning, for the keys the file or --vary set.
@@ -152,6 +136,32 @@ std::string check_start_criteria(const Config& c, const LinerSurface& ring) {
 }
 
 }  // namespace
+
+std::optional<MetCriterion> criterion_met(const Config& c, const LinerSurface& ring) {
+  const ForecastSpec& f = c.forecast;
+  const int period = pattern_period(ring);
+  const SegmentMetrics lifter = segment_metrics(ring, 0, c.mill.rotation, c.liner.density_kg_m3);
+  double thinnest = lifter.min_thickness_m;
+  for (int k = 1; k < period; ++k)
+    thinnest = std::min(thinnest, segment_metrics(ring, k, c.mill.rotation, c.liner.density_kg_m3).min_thickness_m);
+  const bool has = lifter.has_lifter;
+  const double face = lifter.face_angle_leading_deg;
+  constexpr double kWornThroughM = 2e-4;  // forecast.cpp's: the remesh holds nodes 1e-4 m off the shell
+  const std::array<std::pair<const char*, bool>, 4> met = {{
+      {"min_lifter_height", has && lifter.lifter_height_m <= f.min_lifter_height_m},
+      {"min_plate_thickness", thinnest <= f.min_plate_thickness_m},
+      {"max_face_angle_leading", has && !std::isnan(face) && face >= f.max_face_angle_leading_deg},
+      {"worn_through", thinnest <= kWornThroughM},
+  }};
+  const std::array<const char*, 4> keys = {"forecast.min_lifter_height_m", "forecast.min_plate_thickness_m",
+                                           "forecast.max_face_angle_leading_deg", "forecast.min_plate_thickness_m"};
+  for (size_t i = 0; i < met.size(); ++i)
+    if (met[i].second)
+      return MetCriterion{met[i].first, keys[i],
+                          fmt::format("lifter height {:.4f} m, thinnest point {:.4f} m, leading face {:.2f} deg",
+                                      lifter.lifter_height_m, thinnest, face)};
+  return std::nullopt;
+}
 
 ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fitted, bool print_warnings) {
   // A coarse-grained DEM needs its largest disc under the lifter

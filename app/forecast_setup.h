@@ -6,6 +6,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,19 @@ struct ForecastSetup {
   std::unique_ptr<RateProvider> provider;   // charge model + wear laws
   std::vector<std::string> warnings;        // wear_load_warnings() of the configuration
 };
+
+/// A relining criterion a ring already meets: its name (as a forecast's
+/// `criterion`), its [forecast] key and the gauges that meet it.
+struct MetCriterion {
+  std::string name, key, gauges;
+};
+
+/// The first relining criterion of c's [forecast] that `ring` already meets,
+/// gauged as the forecast gauges it (forecast/forecast.cpp, Criteria:
+/// segment 0's lifter, the thinnest point over one period of the pattern; a
+/// liner without a lifter has no height or face criterion); none if it meets
+/// none.
+std::optional<MetCriterion> criterion_met(const Config& c, const LinerSurface& ring);
 
 /// Throws InputError for a charge model that is not available, an
 /// incompatible wear law, a liner material out of range, or a DEM coarse

@@ -11,6 +11,7 @@
 
 #include "forecast/parallel.h"
 #include "geometry/errors.h"
+#include "geometry/measured_profile.h"
 
 namespace linerlife {
 
@@ -122,6 +123,13 @@ struct Fit {
 /// zero; the undetermined parameters are the columns the pivoting leaves last.
 constexpr double kMaxSigmaLog = 2.302585092994046;  // ln 10: a 1-sigma factor of 10
 
+/// A fit no step improves is at its minimum where the Gauss-Newton model
+/// promises to lower the rms misfit by at most this share of it, or by at
+/// most the finest detail a profile holds (kMinProfileDetailM, 0.01 mm; an
+/// exact synthetic fit ends at a misfit of a few nanometres, where the
+/// share means nothing).
+constexpr double kStationaryShare = 5e-4;
+
 void check_determined(const Eigen::MatrixXd& J, const CalibrationProblem& p) {
   const Eigen::Index np = J.cols();
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(J);
@@ -225,6 +233,9 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
     if (it == 0) check_determined(J, p);  // before a fit that cannot succeed
     const Eigen::MatrixXd A = J.transpose() * J;
     const Eigen::VectorXd g = J.transpose() * r;
+    // what the Gauss-Newton model promises: |r + J d|^2 is least at
+    // d = -A^-1 g, where it is rss - g^T A^-1 g
+    const double promised = g.dot(A.ldlt().solve(g));
     bool improved = false;
     Eigen::VectorXd step;
     for (int tries = 0; tries < 8 && !improved; ++tries) {
@@ -249,15 +260,32 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
         lambda *= 4;
       }
     }
-    if (!improved) res.converged = true;  // no step lowers the misfit: at the minimum (to the FD resolution)
+    // No step lowers the misfit: a minimum (to the finite differences'
+    // resolution) only where the linear model promised next to nothing too.
+    // Where it promised more, even the shortest steps along its descent
+    // failed: the misfit is not smooth there, or the Jacobian does not
+    // describe it, and the fit has stalled (a review: a scan dated far past
+    // the liner's life stalled at its start and was called converged).
+    if (!improved) {
+      const double rms = std::sqrt(rss / m), rms_promised = std::sqrt(std::max(0.0, rss - promised) / m);
+      res.promised_rms_m = rms_promised;
+      res.stalled = rms - rms_promised > std::max(kStationaryShare * rms, kMinProfileDetailM);
+      res.converged = !res.stalled;
+      break;
+    }
     if (res.converged) break;
+  }
+  res.rms_m = std::sqrt(rss / m);
+  res.params = exp_of(theta);
+  if (res.stalled) {  // no optimum to take a covariance at (require_converged() says so)
+    res.forecasts = fit.forecasts;
+    return res;
   }
   // covariance of ln(parameters) at the optimum: s^2 (J^T J)^-1, with J re-evaluated there
   jacobian();
   check_determined(J, p);
   const double s2 = rss / static_cast<double>(m - np);
   res.covariance_log = s2 * (J.transpose() * J).inverse();
-  res.params = exp_of(theta);
   for (int j = 0; j < np; ++j) {
     const double v = res.covariance_log(j, j);
     if (!(std::isfinite(v) && v >= 0))  // check_determined() should have caught it; never a sigma of 0 for it
@@ -286,9 +314,26 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
                                  p.measured.source, loose, np, fmt::join(p.names, ",")));
   fit.residuals(res.params, &res.rms_per_snapshot_m, &reach);
   if (!reach.ok()) refuse_unreached("fitted", res.params);  // cannot happen: every accepted step reached them
-  res.rms_m = std::sqrt(rss / m);
   res.forecasts = fit.forecasts;
   return res;
+}
+
+void require_converged(const CalibrationProblem& p, const CalibrationResult& r) {
+  if (r.converged) return;
+  std::string f;
+  for (size_t i = 0; i < r.params.size(); ++i) f += fmt::format("{}{} {:.4g}", i ? ", " : "", p.names[i], r.params[i]);
+  throw SimulationError(
+      r.stalled
+          ? fmt::format("{}: the fit stalled at the factors {} after {} iteration(s): no step lowers the misfit (rms "
+                        "{:.2f} mm, {:.2f} mm at the start), though its slope promises {:.2f} mm; the forecast "
+                        "profiles do not change smoothly with the factors there. Check the profiles' hours (those "
+                        "since the liner was new: a scan dated far past the liner's life is one cause), or fit fewer "
+                        "factors (--fit)",
+                        p.measured.source, f, r.iterations, 1000 * r.rms_m, 1000 * r.rms_initial_m,
+                        1000 * r.promised_rms_m)
+          : fmt::format("{}: the fit did not converge in {} iterations: the factors {} still move (rms {:.2f} mm, "
+                        "{:.2f} mm at the start); check the profiles' hours, or fit fewer factors (--fit)",
+                        p.measured.source, r.iterations, f, 1000 * r.rms_m, 1000 * r.rms_initial_m));
 }
 
 std::vector<ProfileRecord> fitted_profiles(const CalibrationProblem& p, const std::vector<double>& params) {

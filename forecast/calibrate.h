@@ -43,6 +43,8 @@ struct CalibrationResult {
   int forecasts = 0;
   int iterations = 0;
   bool converged = false;
+  bool stalled = false;        // no step lowered the misfit, though the linear model promised a gain
+  double promised_rms_m = 0;   // [m] the rms the linear model promised where the fit stalled
 };
 
 /// Fits p.names to p.measured. Throws InputError naming p.measured.source
@@ -50,8 +52,16 @@ struct CalibrationResult {
 /// (check_history_has_wear), or a Jacobian of the residuals without full
 /// column rank (a factor that does not change the forecast profiles, or
 /// changes them only as the others do), naming the factor(s); never a sigma
-/// of 0 for an undetermined factor.
+/// of 0 for an undetermined factor. A fit that stalls (no step lowers the
+/// misfit, though the Gauss-Newton model promises to lower its rms by more
+/// than 0.05 % and 0.01 mm) or runs out of iterations is returned with
+/// `converged` false (`stalled` for the first); require_converged() refuses it.
 CalibrationResult calibrate(const CalibrationProblem& p);
+
+/// Throws SimulationError (exit 3) naming p.measured.source, the factors, the
+/// misfit and what went wrong where `r` did not converge: its factors are not
+/// a fit and are never to be reported as one.
+void require_converged(const CalibrationProblem& p, const CalibrationResult& r);
 
 /// Throws InputError naming the file when the history has no profile after
 /// 0 h: profiles of the new liner alone cannot determine a wear factor.
