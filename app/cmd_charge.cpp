@@ -148,6 +148,12 @@ int run_charge(const ChargeOptions& o) {
   Config c = load_config_or_default(o.config);
   if (!o.model.empty()) c.model.charge = o.model;
   if (!o.variant.empty()) c.model.variant = o.variant;
+  // the versions are the layer model's (thesis §4.6): refused, not ignored, with another model
+  if (!o.variant.empty() && c.model.charge != "layer")
+    throw InputError("--variant", fmt::format("--variant {}: the {} model has no versions; --variant chooses the layer "
+                                              "model's version of thesis §4.6 (1.0, 1.1 or 1.2): drop it, or run "
+                                              "--model layer",
+                                              o.variant, c.model.charge));
   const ChargeModelEntry& entry = find_charge_model(c.model.charge);
   if (!o.out.empty()) check_output_dir_writable(o.out, {"charge.h5"});
   const LinerSurface s = build_liner_surface(c.mill, c.liner);
@@ -268,7 +274,8 @@ void register_charge(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--variant", opts->variant, "Layer model version of thesis §4.6 (default: [model] variant)")
       ->check(CLI::IsMember({"1.0", "1.1", "1.2"}));
   cmd->add_option("--revolutions", opts->revolutions,
-                  "Mill revolutions to average over, after settling (default 2; 0.05 <= N <= 1e4)");
+                  "Mill revolutions to average over, after settling (default 2; 0.05 <= N <= 1e4)")
+      ->check(decimal_check(false));
   cmd->add_flag("--json", opts->json, "Print one JSON object instead of the human summary");
   cmd->add_option("--out", opts->out, "Write charge.h5 and charts into this folder")
       ->check(out_folder_check("without --out nothing is written"));

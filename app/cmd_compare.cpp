@@ -8,7 +8,6 @@
 #include <cmath>
 #include <iostream>
 #include <mutex>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -57,11 +56,37 @@ double time_mean(const std::vector<LifeRecord>& h, double LifeRecord::*field) {
   return span > 0 ? area / span : (h.empty() ? NAN : h.front().*field);
 }
 
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, sep)) out.push_back(item);
+/// The values of --vary KEY=v1,v2,...: split at the commas that are not
+/// inside a TOML string ("..." or '...') or a list or table ([...], {...}),
+/// so that a value holding commas can be varied when written as TOML:
+/// wear.laws="abrasion/archard","abrasion/archard, impact/finnie" or
+/// forecast.shutdowns=[],[{start=2027-06-01,days=7}]. Throws naming the
+/// option for a quote or bracket left open.
+std::vector<std::string> split_values(const std::string& option, const std::string& s) {
+  std::vector<std::string> out(1);
+  char quote = 0;
+  int depth = 0;
+  for (size_t i = 0; i < s.size(); ++i) {
+    const char ch = s[i];
+    if (quote) {
+      if (ch == '\\' && quote == '"' && i + 1 < s.size()) out.back() += s[i++];  // \" inside a basic string
+      else if (ch == quote) quote = 0;
+    } else if (ch == '"' || ch == '\'') {
+      quote = ch;
+    } else if (ch == '[' || ch == '{') {
+      ++depth;
+    } else if ((ch == ']' || ch == '}') && depth > 0) {
+      --depth;
+    } else if (ch == ',' && depth == 0) {
+      out.emplace_back();
+      continue;
+    }
+    out.back() += ch;
+  }
+  if (quote || depth > 0)
+    throw InputError("--vary", fmt::format("--vary {}: a {} is not closed; write a value that holds commas as TOML, "
+                                           "e.g. wear.laws=\"abrasion/archard\",\"abrasion/archard, impact/finnie\"",
+                                           option, quote ? "quote" : "bracket"));
   return out;
 }
 
@@ -93,7 +118,7 @@ std::vector<Case> vary_cases(const Config& base, const std::vector<std::string>&
     const auto eq = v.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 >= v.size())
       throw InputError("--vary", fmt::format("--vary {}: write KEY=v1,v2,... (e.g. liner.face_angle_leading_deg=15,25)", v));
-    Axis a{v.substr(0, eq), split(v.substr(eq + 1), ',')};
+    Axis a{v.substr(0, eq), split_values(v, v.substr(eq + 1))};
     // the key, before any case is built (config_with() checks it again)
     const auto dot = a.key.find('.');
     if (dot == std::string::npos)
@@ -340,7 +365,8 @@ void register_compare(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("CONFIG", o->configs, "Two or more configurations, or one with --vary")->check(config_path_check());
   cmd->add_option("--vary", o->vary,
                   "KEY=v1,v2,... one key (section.key) over several values (a string key's without quotes: "
-                  "mill.rotation=ccw,cw); repeated: every combination")
+                  "mill.rotation=ccw,cw; a value holding commas as TOML: wear.laws=\"a/b\",\"a/b, c/d\"); "
+                  "repeated: every combination")
       ->expected(1)
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -348,7 +374,8 @@ void register_compare(CLI::App& app, std::function<int()>& run) {
   cmd->add_flag("--json", o->json, "Print one JSON object instead of the table");
   cmd->add_option("--out", o->out, "Write compare.h5 and charts into this folder")
       ->check(out_folder_check("without --out nothing is written"));
-  cmd->add_option("--jobs", o->jobs, "Forecasts run at once (default: one per core; one at a time with the DEM)");
+  cmd->add_option("--jobs", o->jobs, "Forecasts run at once (default: one per core; one at a time with the DEM)")
+      ->check(decimal_check(true));
   cmd->callback([&run, o] { run = [o] { return run_compare(*o); }; });
 }
 

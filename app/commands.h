@@ -43,6 +43,11 @@ std::string num(double v, const char* f);
 /// charts in DIR", or, where the charts failed (their warning above), says so.
 void print_written(const std::string& file, const std::string& dir, bool charts);
 
+/// The check of a numeric option: a decimal number as the CSV files read it
+/// (parse_decimal), without a point or an exponent where `integer`. CLI11 reads
+/// `--revolutions 0x10` as 16 and `0x1p-3` as 0.125.
+CLI::Validator decimal_check(bool integer);
+
 /// Refuses an empty CONFIG argument (a script's unset variable), which would
 /// otherwise run the bundled mill as if no file had been given.
 CLI::Validator config_path_check();

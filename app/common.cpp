@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "forecast/forecast.h"
 #include "forecast/parallel.h"
+#include "geometry/input_text.h"
 
 namespace linerlife {
 
@@ -30,6 +31,26 @@ std::string num(double v, const char* f) { return std::isfinite(v) ? fmt::format
 void print_written(const std::string& file, const std::string& dir, bool charts) {
   std::cout << fmt::format("Wrote {}{} in {}{}\n", file, charts ? " and charts" : "", dir,
                            charts ? "" : " (no charts: see the warning above)");
+}
+
+CLI::Validator decimal_check(bool integer) {
+  return CLI::Validator(
+      [integer](std::string& v) -> std::string {
+        // what the CSV files accept (parse_decimal), a count without a point
+        // or an exponent (its range is the command's to check); the value
+        // handed on in the form CLI11 reads
+        double x = 0;
+        const bool ok = parse_decimal(v, x) && (!integer || v.find_first_of(".eE") == std::string::npos);
+        if (ok) {
+          v = fmt::format("{}", x);
+          return "";
+        }
+        return fmt::format("\"{}\" is not {}", printable(v),
+                           integer ? "a whole number; allowed decimal digits, e.g. 2"
+                                   : "a decimal number; allowed decimal digits, e.g. 2, 0.5 or 1e7 (no hexadecimal, "
+                                     "inf or nan)");
+      },
+      "");
 }
 
 CLI::Validator config_path_check() {

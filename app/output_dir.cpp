@@ -35,6 +35,19 @@ void check_output_dir_writable(const std::string& dir, const std::vector<std::st
     if (!fs::is_directory(p, ec)) throw InputError(dir, fmt::format("output folder {} exists and is not a folder", dir));
     if (access(p.c_str(), W_OK | X_OK) != 0)
       throw InputError(dir, fmt::format("output folder {} cannot be written (permissions)", dir));
+    // the permissions do not tell everything (/proc, a read-only mount): a
+    // file made, written and removed at once, before any work
+    std::string probe = (p / ".linerlife-probe-XXXXXX").string();
+    const int fd = mkstemp(probe.data());
+    if (fd < 0)
+      throw InputError(dir, fmt::format("output folder {} cannot be written: a file cannot be made in it: {}", dir,
+                                        std::strerror(errno)));
+    const bool wrote = write(fd, "x", 1) == 1;
+    const int err = errno;
+    close(fd);
+    fs::remove(probe, ec);
+    if (!wrote)
+      throw InputError(dir, fmt::format("output folder {} cannot be written: {}", dir, std::strerror(err)));
     return;
   }
   fs::path parent = p.parent_path();

@@ -388,6 +388,22 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
       {"plot " + (dir / "missing.h5").string() + o, {"results file", "missing.h5 does not exist"}},
       {"plot " + toml + o, {"a.toml is not a readable HDF5 file"}},
       {"frobnicate" + o, {"--help"}},
+      // CLI11 read hexadecimal (0x10 as 16 revolutions, 0x1p-3 as 0.125),
+      // which the configuration and the CSV files refuse (a review, 2026-12-04)
+      {"charge --revolutions 0x10" + o, {"--revolutions: \"0x10\" is not a decimal number", "no hexadecimal"}},
+      {"wear --revolutions 0x1p-3" + o, {"--revolutions: \"0x1p-3\" is not a decimal number"}},
+      {"wear --amplification 0x1p20" + o, {"--amplification: \"0x1p20\" is not a decimal number"}},
+      {"charge --revolutions inf" + o, {"--revolutions: \"inf\" is not a decimal number"}},
+      {"compare --vary liner.lifter_height_m=0.23,0.25 --jobs 0x2" + o, {"--jobs: \"0x2\" is not a whole number"}},
+      {"calibrate --measured " + csv + " --jobs 2.0" + o, {"--jobs: \"2.0\" is not a whole number"}},
+      // the versions are the layer model's: --variant was ignored with the others
+      {"charge --model empirical --variant 1.1" + o,
+       {"--variant 1.1: the empirical model has no versions", "--model layer"}},
+      {"charge --model dem --variant 1.0" + o, {"--variant 1.0: the dem model has no versions"}},
+      // a value holding commas is written as TOML; a quote or bracket left open is named
+      {"compare --vary 'wear.laws=\"abrasion/archard,impact/finnie'" + o,
+       {"--vary wear.laws=\"abrasion/archard,impact/finnie: a quote is not closed"}},
+      {"compare --vary 'forecast.shutdowns=[],[{start=2027-06-01,days=7}'" + o, {"a bracket is not closed"}},
   };
   for (const Refusal& c : cases) check_refused(run_linerlife(c.args), c, out);
   // an unknown command is named, with the list of commands
@@ -705,6 +721,14 @@ TEST_CASE("an output folder that cannot be written, or a checkpoint that is not 
                                       ", which is not a file: the results go there"));
     CHECK(r.out.empty());
     CHECK(std::distance(fs::directory_iterator(taken), fs::directory_iterator()) == 1);
+  }
+  // a folder the permissions allow and the file system does not: refused
+  // before any work (a review: exit 1 and a disk-full hint after the forecast)
+  if (fs::is_directory("/proc")) {
+    r = run_linerlife("charge --out /proc");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("output folder /proc cannot be written: a file cannot be made in it"));
+    CHECK(r.out.empty());
   }
   // --out names a folder inside a file: said so (not "not writable"), the file untouched
   r = run_linerlife("geometry --out " + (dir / "afile" / "sub").string());

@@ -296,6 +296,34 @@ TEST_CASE("compare --vary forecasts one case per value and ranks them in a table
   fs::remove_all(dir);
 }
 
+// --vary split its values at every comma, so a value holding one (two wear
+// laws, a list of shutdowns) could not be varied (a review, 2026-12-04): a
+// value is split only at commas outside TOML strings and brackets.
+TEST_CASE("compare --vary varies values that hold commas, written as TOML", "[app][cli][compare]") {
+  const fs::path dir = temp_dir("fc_compare_commas");
+  write_file(dir / "m.toml", fast_qiu());
+  const RunResult r = run_linerlife(
+      "compare " + (dir / "m.toml").string() +
+      " --vary 'wear.laws=\"abrasion/radziszewski\",\"abrasion/radziszewski, impact/sheldon_kanhere\"'"
+      " --vary 'forecast.shutdowns=[],[{start=2027-02-01,days=30},{start=2027-06-01,days=10}]' --json --jobs 1");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const JsonValue j = parse_json(r.out);
+  const auto& cases = j["cases"].items();
+  REQUIRE(cases.size() == 4);
+  CHECK(cases[0]["vary"]["wear.laws"].str() == "\"abrasion/radziszewski\"");
+  CHECK(cases[3]["vary"]["wear.laws"].str() == "\"abrasion/radziszewski, impact/sheldon_kanhere\"");
+  CHECK(cases[1]["vary"]["forecast.shutdowns"].str() == "[{start=2027-02-01,days=30},{start=2027-06-01,days=10}]");
+  // impact wear on top of abrasion: the liner lasts fewer hours
+  CHECK(cases[2]["operating_hours"].num() < cases[0]["operating_hours"].num());
+  // shutdowns move the date, not the operating hours
+  for (int k : {0, 2}) {
+    CHECK(cases[k + 1]["operating_hours"].num() == cases[k]["operating_hours"].num());
+    CHECK(cases[k + 1]["relining_date"].str() > cases[k]["relining_date"].str());
+  }
+  fs::remove_all(dir);
+}
+
 TEST_CASE("compare of lifter designs by the layer model says its ranking is to be checked with the DEM",
           "[app][compare]") {
   const Config base = load_config_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/qiu2001_sag.toml");
@@ -499,5 +527,25 @@ TEST_CASE("calibrate recovers the wear factor of synthetic scans from the comman
   CHECK_THAT(read_file((dir / "cal" / "calibrated.toml").string()), Catch::Contains("calibration_gravitational"));
   const RunResult again = run_linerlife("geometry " + (dir / "cal" / "calibrated.toml").string() + " --json");
   CHECK(again.code == 0);
+
+  // A last scan that already meets a relining criterion: the liner is due
+  // now. Said before the fit, which still gives the factor; the remaining
+  // life is 0 h (before: exit 2 after the fit, "at the start", naming neither
+  // the scan nor the criterion's line).
+  write_file(dir / "due.toml", std::regex_replace(fast_qiu("output_interval_h = 500\n"),
+                                                  std::regex("min_lifter_height_m = 0.2\n"),
+                                                  "min_lifter_height_m = 0.245\n"));
+  const RunResult due = run_linerlife("calibrate " + (dir / "due.toml").string() + " --measured " +
+                                      (dir / "scans.csv").string() + " --fit abrasion --json");
+  INFO(due.err);
+  REQUIRE(due.code == 0);
+  const JsonValue jd = parse_json(due.out);
+  CHECK(jd["parameters"].items()[0]["factor"].num() == params[0]["factor"].num());
+  CHECK(jd["remaining_hours_p10"].num() == 0);
+  CHECK(jd["remaining_hours_p90"].num() == 0);
+  CHECK(jd["criterion"].str() == "min_lifter_height");
+  CHECK_THAT(due.err, Catch::Contains("the last measured profile (" + (dir / "scans.csv").string() + " at "));
+  CHECK_THAT(due.err, Catch::Contains("already meets the relining criterion min_lifter_height (lifter height 0.2"));
+  CHECK_THAT(due.err, Catch::Contains("[forecast] min_lifter_height_m = 0.245 at " + (dir / "due.toml").string() + ":"));
   fs::remove_all(dir);
 }
