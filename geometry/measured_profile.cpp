@@ -14,6 +14,7 @@
 #include "geometry/input_file.h"
 #include "geometry/input_text.h"
 #include "geometry/mill.h"
+#include "geometry/stretch_grid.h"
 
 namespace linerlife {
 namespace {
@@ -63,10 +64,25 @@ bool segments_intersect(const V& p1, const V& p2, const V& q1, const V& q2) {
 bool polyline_self_intersects(const std::vector<V>& pts) { return first_self_crossing(pts).first >= 0; }
 
 std::pair<int, int> first_self_crossing(const std::vector<V>& pts) {
+  // The pair a scan of every i, then every j > i + 1, meets first: for each
+  // stretch i in turn, the least j among the stretches that share a cell of
+  // the grid with it (every stretch that touches it does). Before the grid
+  // (2026-12-04) that scan itself ran: 1.25e9 pairs for 50,000 points.
   const int n = static_cast<int>(pts.size());
-  for (int i = 0; i + 1 < n; ++i)
-    for (int j = i + 2; j + 1 < n; ++j)
-      if (segments_intersect(pts[i], pts[i + 1], pts[j], pts[j + 1])) return {i, j};
+  if (n < 4) return {-1, -1};
+  const StretchGrid grid(pts, 0.0);
+  for (int i = 0; i + 1 < n; ++i) {
+    int best = n;
+    grid.for_each_cell_of_stretch(i, [&](int c) {
+      const auto [first, last] = grid.stretches_in(c);
+      for (const int* j = std::upper_bound(first, last, i + 1); j != last && *j < best; ++j)
+        if (segments_intersect(pts[i], pts[i + 1], pts[*j], pts[*j + 1])) {
+          best = *j;
+          break;
+        }
+    });
+    if (best < n) return {i, best};
+  }
   return {-1, -1};
 }
 
@@ -178,22 +194,46 @@ void validate_measured_profile(const MeasuredProfile& p, double R, int segments)
     throw InputError(p.source, fmt::format("{}: the profile crosses itself: the stretch from {} to {} crosses the one "
                                            "from {} to {}",
                                            p.source, pt(a), pt(a + 1), pt(b), pt(b + 1)));
-  for (size_t j = 0; j + 1 < n; ++j) {
+  const auto [j, i] = first_point_near_stretch(pts, d_min);
+  if (j >= 0) {
+    const V e = pts[j + 1] - pts[j];
+    const double t = std::clamp((pts[i] - pts[j]).dot(e) / e.squaredNorm(), 0.0, 1.0);
+    const double d = (pts[j] + t * e - pts[i]).norm();
+    throw InputError(p.source, fmt::format("{}: {} is {:.3g} mm from the stretch from {} to {}: a needle or a fold "
+                                           "of the profile thinner than {} mm is finer than any measurement of a "
+                                           "liner; allowed at least {} mm between a point and the stretches it "
+                                           "does not end",
+                                           p.source, pt(i), d * 1e3, pt(j), pt(j + 1), d_min * 1e3, d_min * 1e3));
+  }
+}
+
+std::pair<int, int> first_point_near_stretch(const std::vector<V>& pts, double d_min) {
+  // As a scan of every stretch j, then every point i, meets it; only the
+  // points in the grid cells of stretch j can be that near. Before the grid
+  // (2026-12-04) that scan itself ran: 2.5e9 pairs for 50,000 points.
+  const int n = static_cast<int>(pts.size());
+  if (n < 2) return {-1, -1};
+  const StretchGrid grid(pts, d_min);
+  for (int j = 0; j + 1 < n; ++j) {
     const Eigen::Array2d lo = pts[j].cwiseMin(pts[j + 1]).array() - d_min;
     const Eigen::Array2d hi = pts[j].cwiseMax(pts[j + 1]).array() + d_min;
     const V e = pts[j + 1] - pts[j];
-    for (size_t i = 0; i < n; ++i) {
-      if (i == j || i == j + 1 || (pts[i].array() < lo).any() || (pts[i].array() > hi).any()) continue;
-      const double t = std::clamp((pts[i] - pts[j]).dot(e) / e.squaredNorm(), 0.0, 1.0);
-      const double d = (pts[j] + t * e - pts[i]).norm();
-      if (d < d_min)
-        throw InputError(p.source, fmt::format("{}: {} is {:.3g} mm from the stretch from {} to {}: a needle or a fold "
-                                               "of the profile thinner than {} mm is finer than any measurement of a "
-                                               "liner; allowed at least {} mm between a point and the stretches it "
-                                               "does not end",
-                                               p.source, pt(i), d * 1e3, pt(j), pt(j + 1), d_min * 1e3, d_min * 1e3));
-    }
+    int first = n;
+    grid.for_each_cell_of_stretch(j, [&](int c) {
+      const auto [begin, end] = grid.points_in(c);
+      for (const int* k = begin; k != end && *k < first; ++k) {
+        const int i = *k;
+        if (i == j || i == j + 1 || (pts[i].array() < lo).any() || (pts[i].array() > hi).any()) continue;
+        const double t = std::clamp((pts[i] - pts[j]).dot(e) / e.squaredNorm(), 0.0, 1.0);
+        if ((pts[j] + t * e - pts[i]).norm() < d_min) {
+          first = i;
+          break;
+        }
+      }
+    });
+    if (first < n) return {j, first};
   }
+  return {-1, -1};
 }
 
 std::vector<V> measured_profile_to_segment(const MeasuredProfile& p, double R, int segments, double h) {

@@ -53,11 +53,20 @@ std::vector<Eigen::Vector2d> segment_to_profile_xy(const std::vector<Eigen::Vect
                                                    double centre_rad, double segment_angle_rad);
 
 /// Whether an open polyline crosses itself (segments that are not neighbours
-/// touch or cross). O(n^2), for input validation and tests.
+/// touch or cross). Near-linear: only stretches that share a cell of a
+/// StretchGrid (geometry/stretch_grid.h) are compared.
 bool polyline_self_intersects(const std::vector<Eigen::Vector2d>& pts);
 
 /// The first pair (i, j), i < j, of non-neighbouring stretches (points i to
-/// i + 1 and j to j + 1) that touch or cross; (-1, -1) if none.
+/// i + 1 and j to j + 1) that touch or cross, first in the order of a scan of
+/// every i, then every j (least i, then least j); (-1, -1) if none.
 std::pair<int, int> first_self_crossing(const std::vector<Eigen::Vector2d>& pts);
+
+/// The first stretch j (points j to j + 1) with a point i it does not end
+/// (i != j, j + 1) nearer to it than `d` [m], and the first such point, in the
+/// order of a scan of every j, then every i; (-1, -1) if none. Near-linear
+/// (a StretchGrid, geometry/stretch_grid.h): a needle or fold finer than
+/// kMinProfileDetailM in validate_measured_profile.
+std::pair<int, int> first_point_near_stretch(const std::vector<Eigen::Vector2d>& pts, double d);
 
 }  // namespace linerlife
