@@ -142,11 +142,15 @@ int run_calibrate(const CalibrateOptions& o) {
                                                                         : c.forecast.max_face_angle_leading_deg;
     std::string at = config_location(c, due->key);  // "FILE:LINE: "
     at = at.substr(0, at.size() - 2);
+    // worn_through has no key of its own: its limit is the remesh's 0.2 mm, not min_plate_thickness_m
+    const std::string rule = due->name == "worn_through"
+                                 ? std::string("a plate at most 0.2 mm thick")
+                                 : fmt::format("[forecast] {} = {} at {}", due->key.substr(due->key.find('.') + 1),
+                                               limit, at);
     note(fmt::format("linerlife: note: the last measured profile ({} at {} h) already meets the relining criterion {} "
-                     "({}; [forecast] {} = {} at {}): the liner is due for relining now, its remaining life 0 h; the "
-                     "fit goes on for the factors",
-                     o.measured, last.hours, due->name, due->gauges, due->key.substr(due->key.find('.') + 1), limit,
-                     at));
+                     "({}; {}): the liner is due for relining now, its remaining life 0 h; the fit goes on for the "
+                     "factors",
+                     o.measured, last.hours, due->name, due->gauges, rule));
   }
   if (!o.json) std::cerr << fmt::format("  fitting {} parameter(s) to {} profiles...\n", ps.size(), h.snapshots.size());
   const CalibrationResult r = calibrate(p);
@@ -265,7 +269,7 @@ void register_calibrate(CLI::App& app, std::function<int()>& run) {
       ->check(out_folder_check("without --out nothing is written"));
   cmd->add_option("--jobs", o->jobs, "Forecasts run at once for the finite differences (default: one per core; one "
                                      "at a time with the DEM)")
-      ->check(decimal_check(true));
+      ->transform(decimal_check(true));
   cmd->callback([&run, o] { run = [o] { return run_calibrate(*o); }; });
 }
 

@@ -133,6 +133,22 @@ constexpr double kMaxSigmaLog = 2.302585092994046;  // ln 10: a 1-sigma factor o
 constexpr double kStationaryShare = 0.05;
 constexpr double kStationaryRmsM = 1e-4;  // [m] 0.1 mm, a tenth of what a liner scan resolves
 
+/// Whether residuals r (rss = |r|^2, m of them) with Jacobian J are at a
+/// minimum to the forecasts' resolution: the Gauss-Newton model |r + J d|^2
+/// is least at d = -A^-1 g (A = J^T J, g = J^T r), rss - g^T A^-1 g there;
+/// the rms it promises (`promised_rms`) lower than now by at most the
+/// threshold above. A model that promises nothing finite (A singular, J with
+/// NaN) promises nothing: check_determined() refuses such a Jacobian.
+bool stationary(const Eigen::MatrixXd& J, const Eigen::VectorXd& r, double rss, Eigen::Index m,
+                double& promised_rms) {
+  const Eigen::VectorXd g = J.transpose() * r;
+  double promised = g.dot((J.transpose() * J).ldlt().solve(g));
+  if (!std::isfinite(promised)) promised = 0;
+  const double rms = std::sqrt(rss / static_cast<double>(m));
+  promised_rms = std::sqrt(std::max(0.0, rss - promised) / static_cast<double>(m));
+  return rms - promised_rms <= std::max(kStationaryShare * rms, kStationaryRmsM);
+}
+
 void check_determined(const Eigen::MatrixXd& J, const CalibrationProblem& p) {
   const Eigen::Index np = J.cols();
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(J);
@@ -236,18 +252,6 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
     if (it == 0) check_determined(J, p);  // before a fit that cannot succeed
     const Eigen::MatrixXd A = J.transpose() * J;
     const Eigen::VectorXd g = J.transpose() * r;
-    // what the Gauss-Newton model promises: |r + J d|^2 is least at
-    // d = -A^-1 g, where it is rss - g^T A^-1 g
-    const double promised = g.dot(A.ldlt().solve(g));
-    const double rss_before = rss;
-    // the linear model's promise against what a fit achieved: a minimum to
-    // the forecasts' resolution where the rms it promises below `rss_now` is
-    // within the threshold
-    auto stationary = [&](double rss_now) {
-      const double rms = std::sqrt(rss_now / m);
-      res.promised_rms_m = std::sqrt(std::max(0.0, rss_before - promised) / m);
-      return rms - res.promised_rms_m <= std::max(kStationaryShare * rms, kStationaryRmsM);
-    };
     bool improved = false;
     Eigen::VectorXd step;
     for (int tries = 0; tries < 8 && !improved; ++tries) {
@@ -279,15 +283,11 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
     // describe it, and the fit has stalled (a review: a scan dated far past
     // the liner's life stalled at its start and was called converged).
     if (!improved) {
-      res.converged = stationary(rss);
+      res.converged = stationary(J, r, rss, m, res.promised_rms_m);
       res.stalled = !res.converged;
       break;
     }
     if (res.converged) break;
-    // Out of iterations: still moving, unless the step has taken the fit to
-    // within the threshold of what this iteration's model promised (a misfit
-    // creeping by the forecasts' own noise, not a fit far from its minimum).
-    if (it + 1 == p.max_iterations) res.converged = stationary(rss);
   }
   res.rms_m = std::sqrt(rss / m);
   res.params = exp_of(theta);
@@ -297,6 +297,10 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
   }
   // covariance of ln(parameters) at the optimum: s^2 (J^T J)^-1, with J re-evaluated there
   jacobian();
+  // Out of iterations and still moving: a minimum after all where the model
+  // at the last point promises as little as a stall's test allows (a misfit
+  // creeping by the forecasts' own noise), otherwise not converged.
+  if (!res.converged) res.converged = stationary(J, r, rss, m, res.promised_rms_m);
   check_determined(J, p);
   const double s2 = rss / static_cast<double>(m - np);
   res.covariance_log = s2 * (J.transpose() * J).inverse();
@@ -339,13 +343,13 @@ void require_converged(const CalibrationProblem& p, const CalibrationResult& r) 
   throw SimulationError(
       r.stalled
           ? fmt::format("{}: the fit stalled at the factors {} after {} iteration(s): no step lowers the misfit (rms "
-                        "{:.2f} mm, {:.2f} mm at the start), though its slope promises {:.2f} mm; the forecast "
+                        "{:.2f} mm, {:.2f} mm at the start), though its slope promises an rms of {:.2f} mm; the forecast "
                         "profiles do not change smoothly with the factors there. Check the profiles' hours (those "
                         "since the liner was new: a scan dated far past the liner's life is one cause), or fit fewer "
                         "factors (--fit)",
                         p.measured.source, f, r.iterations, 1000 * r.rms_m, 1000 * r.rms_initial_m,
                         1000 * r.promised_rms_m)
-          : fmt::format("{}: the fit did not converge in {} iterations: the factors {} still move (rms {:.2f} mm, "
+          : fmt::format("{}: the fit did not converge in {} iteration(s): the factors {} still move (rms {:.2f} mm, "
                         "{:.2f} mm at the start); check the profiles' hours, or fit fewer factors (--fit)",
                         p.measured.source, r.iterations, f, 1000 * r.rms_m, 1000 * r.rms_initial_m));
 }

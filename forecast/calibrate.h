@@ -54,8 +54,9 @@ struct CalibrationResult {
 /// changes them only as the others do), naming the factor(s); never a sigma
 /// of 0 for an undetermined factor. A fit that stalls (no step lowers the
 /// misfit, though the Gauss-Newton model promises to lower its rms by more
-/// than 5 % and 0.1 mm) or runs out of iterations is returned with
-/// `converged` false (`stalled` for the first); require_converged() refuses it.
+/// than 5 % and 0.1 mm), or that runs out of iterations where the model at
+/// its last point still promises that much, is returned with `converged`
+/// false (`stalled` for the first); require_converged() refuses it.
 CalibrationResult calibrate(const CalibrationProblem& p);
 
 /// Throws SimulationError (exit 3) naming p.measured.source, the factors, the

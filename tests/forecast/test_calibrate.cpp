@@ -228,6 +228,18 @@ TEST_CASE("a fit that no step improves where its slope promises a gain is stalle
   CHECK_FALSE(ok.stalled);
   CHECK(ok.params[0] == Approx(1.5).epsilon(0.02));
   CHECK_NOTHROW(require_converged(smooth, ok));
+  // out of iterations far from the minimum (one iteration from 0.2, a step
+  // at most a factor e): not converged, whatever the step achieved
+  smooth.initial = {0.2};
+  smooth.max_iterations = 1;
+  const CalibrationResult cut = calibrate(smooth);
+  INFO("cut short at k = " << cut.params[0] << ", rms " << cut.rms_m << " m, promised " << cut.promised_rms_m << " m");
+  CHECK(cut.rms_m < cut.rms_initial_m);
+  CHECK(cut.params[0] < 1.0);
+  CHECK_FALSE(cut.converged);
+  CHECK_FALSE(cut.stalled);
+  CHECK_THROWS_WITH(require_converged(smooth, cut),
+                    Catch::StartsWith("synthetic: the fit did not converge in 1 iteration(s): the factors k 0."));
 }
 
 TEST_CASE("calibrate separates two coefficients and gives a life spread", "[forecast][calibrate][slow]") {
