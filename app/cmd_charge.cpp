@@ -275,7 +275,7 @@ void register_charge(CLI::App& app, std::function<int()>& run) {
       ->check(CLI::IsMember({"1.0", "1.1", "1.2"}));
   cmd->add_option("--revolutions", opts->revolutions,
                   "Mill revolutions to average over, after settling (default 2; 0.05 <= N <= 1e4)")
-      ->check(decimal_check(false));
+      ->transform(decimal_check(false));
   cmd->add_flag("--json", opts->json, "Print one JSON object instead of the human summary");
   cmd->add_option("--out", opts->out, "Write charge.h5 and charts into this folder")
       ->check(out_folder_check("without --out nothing is written"));

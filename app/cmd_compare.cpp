@@ -69,9 +69,16 @@ std::vector<std::string> split_values(const std::string& option, const std::stri
   for (size_t i = 0; i < s.size(); ++i) {
     const char ch = s[i];
     if (quote) {
-      if (ch == '\\' && quote == '"' && i + 1 < s.size()) out.back() += s[i++];  // \" inside a basic string
-      else if (ch == quote) quote = 0;
-    } else if (ch == '"' || ch == '\'') {
+      if (ch == '\\' && quote == '"' && i + 1 < s.size()) {  // an escape in a basic string (\", \\, \u0077)
+        out.back() += ch;
+        out.back() += s[++i];
+        continue;
+      }
+      if (ch == quote) quote = 0;
+    } else if ((ch == '"' || ch == '\'') &&
+               (depth > 0 || out.back().find_first_not_of(" \t") == std::string::npos)) {
+      // a string opens at the start of a value or inside a list or table; an
+      // apostrophe inside a bare value (o'brien.csv) is a letter
       quote = ch;
     } else if (ch == '[' || ch == '{') {
       ++depth;
@@ -375,7 +382,7 @@ void register_compare(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--out", o->out, "Write compare.h5 and charts into this folder")
       ->check(out_folder_check("without --out nothing is written"));
   cmd->add_option("--jobs", o->jobs, "Forecasts run at once (default: one per core; one at a time with the DEM)")
-      ->check(decimal_check(true));
+      ->transform(decimal_check(true));
   cmd->callback([&run, o] { run = [o] { return run_compare(*o); }; });
 }
 

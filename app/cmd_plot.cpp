@@ -67,6 +67,7 @@ int run_plot(const PlotOptions& o) {
   const std::string dir = o.out.empty() ? std::filesystem::path(o.file).parent_path().string() : o.out;
   OutputDir out(dir.empty() ? "." : dir);
   const std::filesystem::path created = first_missing_folder(out.dir());
+  check_output_dir_writable(out.dir());  // before any work, as every command: exit 2
   out.prepare();
   std::string report;
   const int rc = run_plot_script(kind, o.file, out.dir(), &report);

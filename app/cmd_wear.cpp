@@ -151,10 +151,10 @@ void register_wear(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("CONFIG", opts->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill")
       ->check(config_path_check());
   cmd->add_option("--revolutions", opts->revolutions, "Mill revolutions to simulate ([wear] revolutions)")
-      ->check(decimal_check(false));
+      ->transform(decimal_check(false));
   cmd->add_option("--amplification", opts->amplification,
                   "Wear amplification A for abrasion and impact ([wear] amplification_*; Qiu 2001: 1e7)")
-      ->check(decimal_check(false));
+      ->transform(decimal_check(false));
   cmd->add_flag("--feedback", opts->feedback, "Drive the charge on the worn profile ([wear] feedback = 1)");
   cmd->add_option("--rotation", opts->rotation, "Turn the mill this way with the same liner ([mill] rotation)")
       ->check(CLI::IsMember({"ccw", "cw"}));

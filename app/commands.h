@@ -43,9 +43,11 @@ std::string num(double v, const char* f);
 /// charts in DIR", or, where the charts failed (their warning above), says so.
 void print_written(const std::string& file, const std::string& dir, bool charts);
 
-/// The check of a numeric option: a decimal number as the CSV files read it
-/// (parse_decimal), without a point or an exponent where `integer`. CLI11 reads
-/// `--revolutions 0x10` as 16 and `0x1p-3` as 0.125.
+/// The check of a numeric option, attached with ->transform() (which hands
+/// its rewritten value on; ->check() would not): a decimal number as the CSV
+/// files read it (parse_decimal), without a point or an exponent where
+/// `integer`, rewritten as CLI11 reads it back exactly. CLI11 alone reads
+/// `--revolutions 0x10` as 16, `0x1p-3` as 0.125 and `--jobs 010` as 8.
 CLI::Validator decimal_check(bool integer);
 
 /// Refuses an empty CONFIG argument (a script's unset variable), which would

@@ -37,18 +37,19 @@ CLI::Validator decimal_check(bool integer) {
   return CLI::Validator(
       [integer](std::string& v) -> std::string {
         // what the CSV files accept (parse_decimal), a count without a point
-        // or an exponent (its range is the command's to check); the value
-        // handed on in the form CLI11 reads
+        // or an exponent (its range is the command's to check); the value is
+        // handed on as CLI11 reads it back exactly (a transform: CLI11 reads
+        // the text itself after a check, and takes "010" for octal 8)
         double x = 0;
         const bool ok = parse_decimal(v, x) && (!integer || v.find_first_of(".eE") == std::string::npos);
-        if (ok) {
-          v = fmt::format("{}", x);
+        if (ok && (!integer || std::abs(x) < 1e15)) {
+          v = integer ? fmt::format("{:.0f}", x) : fmt::format("{}", x);
           return "";
         }
         return fmt::format("\"{}\" is not {}", printable(v),
-                           integer ? "a whole number; allowed decimal digits, e.g. 2"
-                                   : "a decimal number; allowed decimal digits, e.g. 2, 0.5 or 1e7 (no hexadecimal, "
-                                     "inf or nan)");
+                           integer ? "a whole number; allowed decimal digits without a point or an exponent, e.g. 2"
+                                   : "a decimal number; allowed decimal digits, e.g. 2, 0.5 or 1e7, within the range "
+                                     "of a double (no hexadecimal, inf or nan)");
       },
       "");
 }

@@ -17,7 +17,7 @@ namespace linerlife {
 
 namespace fs = std::filesystem;
 
-void check_output_dir_writable(const std::string& dir, const std::vector<std::string>& names) {
+void check_output_dir_writable(const std::string& dir, const std::vector<std::string>& names, bool before_work) {
   std::error_code ec;
   if (dir.empty()) throw InputError("--out", "--out \"\": give a folder");
   for (const std::string& n : names) {
@@ -36,19 +36,22 @@ void check_output_dir_writable(const std::string& dir, const std::vector<std::st
     if (access(p.c_str(), W_OK | X_OK) != 0)
       throw InputError(dir, fmt::format("output folder {} cannot be written (permissions)", dir));
     // the permissions do not tell everything (/proc, a read-only mount): a
-    // file made, written and removed at once, before any work
+    // file made, written and removed at once
     std::string probe = (p / ".linerlife-probe-XXXXXX").string();
     const int fd = mkstemp(probe.data());
-    if (fd < 0)
-      throw InputError(dir, fmt::format("output folder {} cannot be written: a file cannot be made in it: {}", dir,
-                                        std::strerror(errno)));
-    const bool wrote = write(fd, "x", 1) == 1;
-    const int err = errno;
-    close(fd);
-    fs::remove(probe, ec);
-    if (!wrote)
-      throw InputError(dir, fmt::format("output folder {} cannot be written: {}", dir, std::strerror(err)));
-    return;
+    int err = errno;
+    bool wrote = false;
+    if (fd >= 0) {
+      wrote = write(fd, "x", 1) == 1;
+      err = errno;
+      close(fd);
+      fs::remove(probe, ec);
+    }
+    if (wrote) return;
+    const std::string why = fmt::format("output folder {} cannot be written: {}{}", dir,
+                                        fd < 0 ? "a file cannot be made in it: " : "", std::strerror(err));
+    if (before_work) throw InputError(dir, why);
+    throw OutputError(why + " (is the disk full?)");
   }
   fs::path parent = p.parent_path();
   while (!parent.empty() && !fs::exists(parent, ec)) parent = parent.parent_path();
@@ -69,7 +72,7 @@ void check_output_dir_writable(const std::string& dir, const std::vector<std::st
 
 void OutputDir::prepare() {
   if (prepared_) return;
-  check_output_dir_writable(dir_);
+  check_output_dir_writable(dir_, {}, false);
   std::error_code ec;
   fs::create_directories(dir_, ec);
   if (ec) throw InputError(dir_, fmt::format("output folder {} cannot be created: {}", dir_, ec.message()));

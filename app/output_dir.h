@@ -45,7 +45,11 @@ class OutputDir {
 /// parent must be), and that none of the files the command writes there
 /// (`names`) is taken by something that is not a file (a folder of that
 /// name failed the run with exit 1 after all its work). Throws InputError;
-/// creates nothing.
-void check_output_dir_writable(const std::string& dir, const std::vector<std::string>& names = {});
+/// creates nothing. An existing folder gets a file made, written and removed
+/// in it (the permissions do not tell everything: /proc); with `before_work`
+/// false (OutputDir::prepare(), after the work) that probe failing is an
+/// OutputError (exit 1: a disk that filled during the run is not bad input).
+void check_output_dir_writable(const std::string& dir, const std::vector<std::string>& names = {},
+                               bool before_work = true);
 
 }  // namespace linerlife

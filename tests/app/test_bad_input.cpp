@@ -404,6 +404,14 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
       {"compare --vary 'wear.laws=\"abrasion/archard,impact/finnie'" + o,
        {"--vary wear.laws=\"abrasion/archard,impact/finnie: a quote is not closed"}},
       {"compare --vary 'forecast.shutdowns=[],[{start=2027-06-01,days=7}'" + o, {"a bracket is not closed"}},
+      // an escape in a TOML string keeps its character ("c\u0077" is cw, the
+      // first value passes), and an apostrophe inside a bare value is a letter
+      {"compare --vary 'mill.rotation=\"c\\u0077\",\"side\\\"ways\"'" + o,
+       {"--vary mill.rotation=\"side\\\"ways\": [mill] rotation = ", "allowed one of \"ccw\", \"cw\""}},
+      {"compare --vary \"liner.profile_csv=" + (dir / "o'brien.csv").string() + "," + csv + "\"" + o,
+       {"profile file " + (dir / "o'brien.csv").string() + " does not exist"}},
+      // CLI11 alone read a count with a leading zero as octal (-010 as -8)
+      {"compare --vary liner.lifter_height_m=0.23,0.25 --jobs=-010" + o, {"--jobs -10: allowed 1 <= value"}},
   };
   for (const Refusal& c : cases) check_refused(run_linerlife(c.args), c, out);
   // an unknown command is named, with the list of commands
