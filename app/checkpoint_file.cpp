@@ -85,16 +85,20 @@ std::string checkpoint_digest(const ForecastCheckpoint& c) {
   d.add(c.has_indicators).add(c.net_power_kw).add(c.toe_deg).add(c.shoulder_deg).add(c.direct_impact_fraction);
   d.add(c.impact_fraction).add(c.provider_drives);
   d.add(c.y).add(c.y_drive).add(c.y_prev).add(c.r_now).add(c.r_prev);
-  d.add(c.base.shell_radius_m).add(c.base.segments).add(c.base.nodes).add(c.base.segment_begin);
-  d.add(c.base.segment_design);
+  // integers as they are stored (64 bit; the reader refuses a count beyond
+  // an int), so a flip of any stored bit counts
+  auto wide = [](const std::vector<int>& v) { return std::vector<long long>(v.begin(), v.end()); };
+  d.add(c.base.shell_radius_m).add(static_cast<long long>(c.base.segments)).add(c.base.nodes);
+  d.add(wide(c.base.segment_begin)).add(wide(c.base.segment_design));
   d.add(static_cast<unsigned long long>(c.history.size()));
   for (const LifeRecord& r : c.history)
     for (const Field& f : kFields) d.add(r.*(f.member));
   d.add(static_cast<unsigned long long>(c.profiles.size()));
   for (const ProfileRecord& p : c.profiles) d.add(p.hours).add(p.nodes);
   const ForecastStats& s = c.stats;
-  d.add(s.charge_redrives).add(s.remeshes).add(s.cvode_steps).add(s.rhs_evals).add(s.error_test_failures);
-  d.add(s.nonlinear_failures).add(s.explicit_steps).add(s.wall_s).add(s.charge_wall_s).add(s.charge_simulated_s);
+  d.add(static_cast<long long>(s.charge_redrives)).add(static_cast<long long>(s.remeshes)).add(s.cvode_steps);
+  d.add(s.rhs_evals).add(s.error_test_failures).add(s.nonlinear_failures).add(static_cast<long long>(s.explicit_steps));
+  d.add(s.wall_s).add(s.charge_wall_s).add(s.charge_simulated_s);
   d.add(static_cast<unsigned long long>(c.notes.size()));
   for (const DriveNote& n : c.notes) d.add(n.text).add(n.first_drive).add(n.drives);
   return d.hex();
@@ -222,7 +226,13 @@ ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& c
   c.r_now = h5.doubles(g + "/r_now");
   c.r_prev = h5.doubles(g + "/r_prev");
   c.base.shell_radius_m = h5.attr_double(g, "shell_radius_m");
-  c.base.segments = static_cast<int>(h5.attr_int(g, "segments"));
+  // a count stored in 64 bits and used as an int: beyond an int it is damage
+  // (the checksum hashes the int used)
+  auto as_int = [&](const char* name, long long v) {
+    if (v != static_cast<int>(v)) throw damaged(name, fmt::format("{}; beyond the range of a count", v));
+    return static_cast<int>(v);
+  };
+  c.base.segments = as_int("segments", h5.attr_int(g, "segments"));
   c.base.nodes = points(xy_pairs("base_nodes"));
   for (long long v : h5.ints(g + "/base_segment_begin")) {
     if (v < 0 || v > static_cast<long long>(c.base.nodes.size()))
@@ -267,13 +277,13 @@ ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& c
   const std::vector<double> sd = h5.doubles(g + "/stats_double");
   if (si.size() != 7) throw damaged("stats_int", fmt::format("{} values; 7 expected", si.size()));
   if (sd.size() != 3) throw damaged("stats_double", fmt::format("{} values; 3 expected", sd.size()));
-  c.stats.charge_redrives = static_cast<int>(si[0]);
-  c.stats.remeshes = static_cast<int>(si[1]);
+  c.stats.charge_redrives = as_int("stats_int", si[0]);
+  c.stats.remeshes = as_int("stats_int", si[1]);
   c.stats.cvode_steps = si[2];
   c.stats.rhs_evals = si[3];
   c.stats.error_test_failures = si[4];
   c.stats.nonlinear_failures = si[5];
-  c.stats.explicit_steps = static_cast<int>(si[6]);
+  c.stats.explicit_steps = as_int("stats_int", si[6]);
   c.stats.wall_s = sd[0];
   c.stats.charge_wall_s = sd[1];
   c.stats.charge_simulated_s = sd[2];
@@ -289,7 +299,7 @@ ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& c
   try {
     stored = h5.attr_string(g, "checksum");
   } catch (const InputError&) {
-    throw damaged("checksum", "missing");
+    throw damaged("checksum", "missing (a checkpoint of a build before checksums, or one damaged)");
   }
   const std::string read = checkpoint_digest(c);
   if (stored != read)
