@@ -49,8 +49,12 @@ std::vector<V> resample_polyline(const std::vector<V>& pts, double h) {
     const double merged = (p[in] - p[ip]).norm();
     const double signed_tri = 0.5 * (a.x() * b.y() - a.y() * b.x());  // > 0: vertex right of the chord
     // a degenerate element (shorter than 1e-6 h) always goes: the area it
-    // can change, below 1e-6 h^2 / 2, is round-off against the liner's
-    if (std::min(la, lb) < 1e-6 * h && merged <= h) {
+    // can change, below 1e-6 h^2 / 2, is round-off against the liner's; so
+    // does the 1e-6 h it adds to its neighbour (before, only where that kept
+    // the neighbour within h: a pair of vertices 2e-15 m apart between two
+    // elements of about h stayed, ran back on itself, and the next remesh
+    // refused the ring as crossing itself, element_size_m = 0.002)
+    if (std::min(la, lb) < 1e-6 * h) {
       degenerate.insert(i);
       return;
     }
