@@ -137,16 +137,9 @@ int run_calibrate(const CalibrateOptions& o) {
   auto worn_ring = std::make_shared<LinerSurface>(build_liner_surface(c.mill, worn));
   const std::optional<MetCriterion> due = criterion_met(c, *worn_ring);
   if (due) {
-    const double limit = due->key == "forecast.min_lifter_height_m"    ? c.forecast.min_lifter_height_m
-                         : due->key == "forecast.min_plate_thickness_m" ? c.forecast.min_plate_thickness_m
-                                                                        : c.forecast.max_face_angle_leading_deg;
     std::string at = config_location(c, due->key);  // "FILE:LINE: "
     at = at.substr(0, at.size() - 2);
-    // worn_through has no key of its own: its limit is the remesh's 0.2 mm, not min_plate_thickness_m
-    const std::string rule = due->name == "worn_through"
-                                 ? std::string("a plate at most 0.2 mm thick")
-                                 : fmt::format("[forecast] {} = {} at {}", due->key.substr(due->key.find('.') + 1),
-                                               limit, at);
+    const std::string rule = due->name == "worn_through" ? due->limit : fmt::format("{} at {}", due->limit, at);
     note(fmt::format("linerlife: note: the last measured profile ({} at {} h) already meets the relining criterion {} "
                      "({}; {}): the liner is due for relining now, its remaining life 0 h; the fit goes on for the "
                      "factors",

@@ -181,11 +181,19 @@ std::optional<MetCriterion> criterion_met(const Config& c, const LinerSurface& r
   }};
   const std::array<const char*, 4> keys = {"forecast.min_lifter_height_m", "forecast.min_plate_thickness_m",
                                            "forecast.max_face_angle_leading_deg", "forecast.min_plate_thickness_m"};
+  // the limit met, as said in a message: worn_through has no key of its own
+  // (it shares min_plate_thickness_m's line), its limit is the remesh's
+  const std::array<std::string, 4> limits = {
+      fmt::format("[forecast] min_lifter_height_m = {} m", f.min_lifter_height_m),
+      fmt::format("[forecast] min_plate_thickness_m = {} m", f.min_plate_thickness_m),
+      fmt::format("[forecast] max_face_angle_leading_deg = {} deg", f.max_face_angle_leading_deg),
+      fmt::format("a plate at most {} mm thick", 1000 * kWornThroughM)};
   for (size_t i = 0; i < met.size(); ++i)
     if (met[i].second)
       return MetCriterion{met[i].first, keys[i],
                           fmt::format("lifter height {:.4f} m, thinnest point {:.4f} m, leading face {:.2f} deg",
-                                      lifter.lifter_height_m, thinnest, face)};
+                                      lifter.lifter_height_m, thinnest, face),
+                          limits[i]};
   return std::nullopt;
 }
 

@@ -24,9 +24,11 @@ struct ForecastSetup {
 };
 
 /// A relining criterion a ring already meets: its name (as a forecast's
-/// `criterion`), its [forecast] key and the gauges that meet it.
+/// `criterion`), its [forecast] key, the gauges that meet it and the limit
+/// they meet ("[forecast] min_lifter_height_m = 0.075 m"; worn_through's is
+/// the remesh's 0.2 mm, not a key's).
 struct MetCriterion {
-  std::string name, key, gauges;
+  std::string name, key, gauges, limit;
 };
 
 /// The first relining criterion of c's [forecast] that `ring` already meets,

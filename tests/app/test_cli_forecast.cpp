@@ -585,6 +585,6 @@ TEST_CASE("calibrate recovers the wear factor of synthetic scans from the comman
   CHECK(jd["criterion"].str() == "min_lifter_height");
   CHECK_THAT(due.err, Catch::Contains("the last measured profile (" + (dir / "scans.csv").string() + " at "));
   CHECK_THAT(due.err, Catch::Contains("already meets the relining criterion min_lifter_height (lifter height 0.2"));
-  CHECK_THAT(due.err, Catch::Contains("[forecast] min_lifter_height_m = 0.245 at " + (dir / "due.toml").string() + ":"));
+  CHECK_THAT(due.err, Catch::Contains("[forecast] min_lifter_height_m = 0.245 m at " + (dir / "due.toml").string() + ":"));
   fs::remove_all(dir);
 }
