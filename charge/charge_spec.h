@@ -47,6 +47,9 @@ struct ModelSpec {
   double hf_lift_angle_deg = 45.0;      // [deg] lift angle alpha of the Hogg-Fuerstenau power figure
   double element_size_diameters = 1.0;  // [-] studies only: layer model's element edge in media diameters
                                         //     (agglomerated elements, thesis §4.4.5; docs/models/layer.md §1)
+  double load_contact_spacing_m = 0;    // [m] studies only: layer model's contact rays for the liner loads, at
+                                        //     most this far apart (0: load_contact_spacing_m() of the surface,
+                                        //     2 mm or finer; docs/models/layer.md §Liner loads)
   double unheld_friction_coefficient = -1;  // [-] studies only: mu of McIvor's angle with beta = 0 for the
                                            //     layers no lifter holds (< 0: friction_coefficient;
                                            //     0: Davis' angle; docs/models/layer.md §3, "The release study")

@@ -33,7 +33,7 @@ inline double fast_atan2(double y, double x) {
 
 /// Radius at which the ray r u (r >= 0) first enters the capsule of radius a
 /// round segment AB; +inf if it does not. The origin must lie outside.
-double ray_capsule_entry(const V& u, const V& A, const V& B, double a) {
+inline __attribute__((always_inline)) double ray_capsule_entry(const V& u, const V& A, const V& B, double a) {
   double best = std::numeric_limits<double>::infinity();
   const V ab = B - A;
   const double l2 = ab.squaredNorm();
@@ -67,7 +67,23 @@ int LinerRideTable::bin(double psi) const {
   return b < 0 ? b + n_bins : b;
 }
 
-LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_per_disc_radius) {
+int LinerRideTable::contact(double psi) const {
+  // nearest ray: floor(x + 1/2) without the libm call; the count of rays is
+  // a power of two, so the mask wraps negative ones too
+  const double x = psi * inv_contact_ray + 0.5;
+  const int j = static_cast<int>(x) - (x < static_cast<int>(x));
+  return contact_element[static_cast<size_t>(j & (static_cast<int>(contact_element.size()) - 1))];
+}
+
+double load_contact_spacing_m(const LinerSurface& s) {
+  std::vector<double> len(s.length.begin(), s.length.end());
+  if (len.empty()) return 0.002;
+  std::nth_element(len.begin(), len.begin() + len.size() / 2, len.end());
+  return std::min(0.002, 0.75 * len[len.size() / 2]);
+}
+
+LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_per_disc_radius,
+                                      double contact_spacing_m) {
   if (!(a > 0)) throw InputError("charge.ball_diameter_m", "the media diameter must be positive");
   LinerRideTable t;
   t.disc_radius_m = a;
@@ -121,6 +137,82 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
     const bool left = t.edge_radius_m[b] <= t.edge_radius_m[b1];
     t.ride_radius_m[b] = left ? t.edge_radius_m[b] : t.edge_radius_m[b1];
     t.support_element[b] = left ? edge_element[b] : edge_element[b1];
+  }
+  // Contact rays between the edges (LinerRideTable::contact_element). The
+  // disc touches edge_element[b] at edge b and edge_element[b + 1] at edge
+  // b + 1; the surface between those two contact points is the elements
+  // between them along the ring, so only they can be touched by a ray
+  // between, each tested exactly as above. Along the rays the touched element
+  // moves forward along the ring (on a profile every ray from the axis
+  // crosses once), so the bin is bisected: a ray halfway between two rays is
+  // searched among the elements from the one's to the other's, and rays
+  // between two that touch the same element touch it too. Tested
+  // against every element, on new and worn lifters
+  // (tests/charge/test_liner_ride_table.cpp).
+  int rays = 1;
+  if (contact_spacing_m > 0)
+    while (rays < 64 && R * t.bin_rad / rays > contact_spacing_m) rays <<= 1;
+  t.contact_rays_per_bin = rays;
+  t.inv_contact_ray = t.inv_bin * rays;
+  t.contact_element.resize(static_cast<size_t>(n) * rays);
+  const int ne = s.n_elements();
+  std::vector<double> ck(rays), sk(rays);
+  for (int k = 0; k < rays; ++k) {
+    ck[k] = std::cos(k * t.bin_rad / rays);
+    sk[k] = std::sin(k * t.bin_rad / rays);
+  }
+  // the element among `count` from `first` on along the ring whose capsule
+  // ray k of bin b enters first (the first of equals; `none` if none)
+  auto touched = [&](int b, int k, int first, int count, int none) {
+    const V u(t.cos_e[b] * ck[k] - t.sin_e[b] * sk[k], t.sin_e[b] * ck[k] + t.cos_e[b] * sk[k]);
+    double best = std::numeric_limits<double>::infinity();
+    int be = none;
+    for (int i = 0, e = first; i < count; ++i, e = e + 1 == ne ? 0 : e + 1) {
+      const double r = ray_capsule_entry(u, s.nodes[e], s.nodes[s.next(e)], a);
+      if (r < best) {
+        best = r;
+        be = e;
+      }
+    }
+    return be;
+  };
+  for (int b = 0; b < n; ++b) {
+    const int b1 = b + 1 == n ? 0 : b + 1;
+    const int e0 = edge_element[b], e1 = edge_element[b1];
+    int* out = &t.contact_element[static_cast<size_t>(b) * rays];
+    out[0] = e0;
+    if (rays == 1) continue;
+    if (e0 == e1 || e0 < 0 || e1 < 0) {  // (no element at an edge: refused below)
+      std::fill(out + 1, out + rays, e0);
+      continue;
+    }
+    const int fwd = ((e1 - e0) % ne + ne) % ne;
+    if (fwd > ne - fwd) {  // the surface runs back here (an overhang): every element between, every ray
+      for (int k = 1; k < rays; ++k) out[k] = touched(b, k, e1, ne - fwd + 1, 2 * k < rays ? e0 : e1);
+      continue;
+    }
+    // the touched element moves forward along the ring from ray to ray: a ray
+    // halfway between two rays touches one of the elements from the first's
+    // to the second's, and where both touch the same element so do all rays
+    // between them
+    auto fill = [&](auto&& self, int klo, int khi, int elo, int ehi) -> void {
+      if (khi - klo < 2) return;
+      if (elo == ehi) {
+        std::fill(out + klo + 1, out + khi, elo);
+        return;
+      }
+      const int km = (klo + khi) / 2;
+      out[km] = touched(b, km, elo, ((ehi - elo) % ne + ne) % ne + 1, elo);
+      self(self, klo, km, elo, out[km]);
+      self(self, km, khi, out[km], ehi);
+    };
+    fill(fill, 0, rays, e0, e1);
+  }
+  t.ride_normal.resize(n);
+  for (int b = 0; b < n; ++b) {
+    const V e = t.point(b + 1 == n ? 0 : b + 1) - t.point(b);
+    const double l = e.norm();
+    t.ride_normal[b] = l > 0 && std::isfinite(l) ? V(-e.y() / l, e.x() / l) : V(-t.cos_e[b], -t.sin_e[b]);
   }
   t.block_min_ride_m.assign((n + LinerRideTable::kBlock - 1) / LinerRideTable::kBlock,
                             std::numeric_limits<double>::infinity());

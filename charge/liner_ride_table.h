@@ -36,11 +36,26 @@ struct LinerRideTable {
   double max_ride_m = 0;             // [m] largest ride radius (deepest pocket)
   static constexpr int kBlock = 16;  // bins per block of block_min_ride_m
   std::vector<double> block_min_ride_m;  // [m] smallest ride radius of each block of kBlock bins
+  // Where the loads go (docs/models/layer.md §Liner loads, "Where a load
+  // lands"): the element the disc touches on contact rays, m per bin (ray j
+  // at angle j h / m; ray b m is edge b). A load at angle psi goes to the
+  // nearest ray's element, so its position is off by at most half a ray
+  // spacing either way, not biased towards the crest as the bin's
+  // smaller-edge element is.
+  int contact_rays_per_bin = 1;          // m, a power of two
+  double inv_contact_ray = 0;            // [1/rad] m / h
+  std::vector<int> contact_element;      // n_bins m entries
+  std::vector<Eigen::Vector2d> ride_normal;  // per bin: unit normal of the ride polyline from edge b to b + 1,
+                                             // into the mill (the direction a disc riding there is pushed)
 
   /// Bin of angle psi [rad] (any value).
   int bin(double psi) const;
   double ride(double psi) const { return ride_radius_m[bin(psi)]; }
   int support(double psi) const { return support_element[bin(psi)]; }
+  /// Element the disc touches at the contact ray nearest psi [rad] (any value).
+  int contact(double psi) const;
+  /// Arc [m] along the shell between contact rays.
+  double contact_spacing_m(double shell_radius_m) const { return shell_radius_m * bin_rad / contact_rays_per_bin; }
   /// Ride point at edge b (liner frame) [m].
   Eigen::Vector2d point(int b) const { return edge_radius_m[b] * Eigen::Vector2d(cos_e[b], sin_e[b]); }
 };
@@ -49,7 +64,15 @@ struct LinerRideTable {
 /// `bins_per_disc_radius` bins per disc radius along the shell (at least 1024,
 /// a power of two). Exact disc-segment geometry: each element is a capsule of
 /// radius a and the ray from the axis enters the first capsule at the ride radius.
-LinerRideTable build_liner_ride_table(const LinerSurface& s, double disc_radius_m, int bins_per_disc_radius = 8);
+/// The contact rays are at most `contact_spacing_m` apart along the shell
+/// (0: one per bin edge), at most 64 per bin.
+LinerRideTable build_liner_ride_table(const LinerSurface& s, double disc_radius_m, int bins_per_disc_radius = 8,
+                                      double contact_spacing_m = 0);
+
+/// The contact spacing the layer model asks for on a surface [m]: 2 mm, or
+/// three quarters of the median element where that is shorter, so that every
+/// element is touched by some ray (docs/models/layer.md §Liner loads).
+double load_contact_spacing_m(const LinerSurface& s);
 
 /// First crossing, within (t_a, t_b], of the parabola p(t) = p0 + v0 t + 1/2 acc t^2
 /// (fixed frame, t from the parabola's origin) outward through the ride polyline

@@ -1,11 +1,15 @@
 // Where a media-sized disc touches the liner, and the exact crossing of a
 // flight parabola with that curve.
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
 #include "charge/liner_ride_table.h"
 #include "fixtures.h"
+#include "geometry/measured_profile.h"
 #include "geometry/mill.h"
 
 using namespace linerlife;
@@ -95,4 +99,81 @@ TEST_CASE("a ball released from a smooth shell lands where the analytic parabola
   CHECK(t_hit == Approx(lo).margin(2 * sag / (0.5 * v_hit.norm())));
   const Eigen::Vector2d p_hit = p0 + v0 * t_hit + 0.5 * g * t_hit * t_hit;
   CHECK(p_hit.norm() == Approx(r).margin(2 * sag));
+}
+
+namespace {
+
+/// Distance [m] from p to element e of s.
+double element_distance(const LinerSurface& s, int e, const Eigen::Vector2d& p) {
+  const Eigen::Vector2d a = s.nodes[e], ab = s.nodes[s.next(e)] - a;
+  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return (a + t * ab - p).norm();
+}
+
+/// Checks every contact ray from ray j0 to j1: the element the table names
+/// is the one nearest the disc's centre at the ride radius on that ray
+/// (found here by marching out from inside the charge and bisecting on the
+/// distance to every element, not with the table's capsule geometry).
+void check_contact_rays(const LinerSurface& s, const LinerRideTable& t, double a, int j0, int j1) {
+  const int m = t.contact_rays_per_bin;
+  int checked = 0, between = 0;
+  for (int j = j0; j < j1; ++j) {
+    const double psi = j * t.bin_rad / m;
+    const Eigen::Vector2d u(std::cos(psi), std::sin(psi));
+    auto gap = [&](double r) { return distance_to_liner(s, r * u) - a; };
+    double lo = t.min_ride_m - a, hi = lo;
+    REQUIRE(gap(lo) > 0);
+    while (gap(hi) > 0) {
+      lo = hi;
+      hi += a / 8;
+    }
+    for (int it = 0; it < 60; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (gap(mid) > 0 ? lo : hi) = mid;
+    }
+    const Eigen::Vector2d c = lo * u;
+    const double nearest = distance_to_liner(s, c);
+    const int e = t.contact(psi);
+    INFO("ray " << j << " (bin " << j / m << ", " << j % m << " of " << m << "): element " << e << " at "
+                << element_distance(s, e, c) << " m from the disc's centre, the nearest at " << nearest << " m");
+    CHECK(element_distance(s, e, c) <= nearest + 1e-9 * a);
+    ++checked;
+    if (j % m != 0) ++between;
+  }
+  CHECK(between >= checked / 2);
+}
+
+}  // namespace
+
+TEST_CASE("the contact rays name the element the disc touches, checked against every element", "[charge][ride]") {
+  // docs/models/layer.md §Liner loads, "Where a load lands": the table finds a
+  // ray's element among those between its bin's two edge elements.
+  const Config c = load_default_config();
+  const double a = 0.5 * c.charge.ball_diameter_m;
+  SECTION("the new lifter at the default 10 mm elements, rays 2 mm apart") {
+    const LinerSurface s = build_liner_surface(c.mill, c.liner);
+    const LinerRideTable t = build_liner_ride_table(s, a, 4, 0.002);
+    CHECK(t.contact_spacing_m(s.shell_radius_m) <= 0.002);
+    CHECK(t.contact_spacing_m(s.shell_radius_m) > 0.001);
+    CHECK(t.contact_rays_per_bin == 8);
+    CHECK(load_contact_spacing_m(s) == 0.002);
+    const int per_segment = t.n_bins * t.contact_rays_per_bin / s.segments;
+    check_contact_rays(s, t, a, 0, per_segment + 3);
+  }
+  SECTION("a worn lifter (a forecast's at 8,659 h) at 2.5 mm elements, rays 1 mm apart") {
+    LinerDesign d = c.liner;
+    d.element_size_m = 0.0025;
+    const MeasuredProfile p =
+        load_profile_csv(std::string(LINERLIFE_SOURCE_DIR) + "/tests/charge/data/qiu_worn_8659h.csv");
+    const std::vector<Eigen::Vector2d> seg =
+        measured_profile_to_segment(p, c.mill.shell_radius_m(), d.segments, d.element_size_m);
+    const LinerSurface s = assemble_ring(c.mill.shell_radius_m(), d.segments, {seg}, std::vector<int>(d.segments, 0));
+    // three quarters of the median element (the scan's points are kept as nodes: under 2.5 mm)
+    CHECK(load_contact_spacing_m(s) <= 0.75 * d.element_size_m);
+    CHECK(load_contact_spacing_m(s) > 0.5 * 0.75 * d.element_size_m);
+    const LinerRideTable t = build_liner_ride_table(s, a, 4, 0.001);
+    CHECK(t.contact_rays_per_bin == 16);
+    const int per_segment = t.n_bins * t.contact_rays_per_bin / s.segments;
+    check_contact_rays(s, t, a, per_segment * 5, per_segment * 6 + 3);
+  }
 }
