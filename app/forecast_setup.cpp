@@ -135,32 +135,6 @@ std::string check_start_criteria(const Config& c, const LinerSurface& ring) {
                      f.min_plate_thickness_m, both ? "them" : "it");
 }
 
-/// A warning where the ring's surface elements are finer than the forecast
-/// is converged for ("" if not): the median element of segment 0 under 4 mm,
-/// from a small element_size_m or a measured profile whose points (kept as
-/// nodes) lie closer. On the bundled mill the life went from 9,173 h at
-/// 10 mm to 10,515 h at 2 mm and 19,047 h at 1.5 mm
-/// (docs/validation/forecast.md, "Finer than 5 mm"); until that is
-/// understood, such a forecast is said to be unconverged, not trusted silently.
-std::string mesh_warning(const Config& c, const LinerSurface& ring) {
-  constexpr double kConvergedElementM = 0.004;
-  std::vector<double> len;
-  const int n = ring.n_nodes();
-  for (int i = ring.segment_begin[0]; i < ring.segment_begin[1]; ++i)
-    len.push_back((ring.nodes[static_cast<size_t>((i + 1) % n)] - ring.nodes[static_cast<size_t>(i)]).norm());
-  if (len.empty()) return "";
-  std::nth_element(len.begin(), len.begin() + static_cast<long>(len.size() / 2), len.end());
-  const double median = len[len.size() / 2];
-  if (median >= kConvergedElementM) return "";
-  return fmt::format("the liner's surface elements are {:.2g} mm long (the median of a segment; element_size_m = {} "
-                     "m{}): below about 4 mm the forecast's life is not converged (the bundled mill: 9,173 h at 10 mm, "
-                     "10,515 h at 2 mm, 19,047 h at 1.5 mm; docs/validation/forecast.md, \"Finer than 5 mm\"); use "
-                     "elements of 4 to 10 mm{}",
-                     1000 * median, c.liner.element_size_m,
-                     c.liner.measured ? ", and the measured profile's points are kept as nodes" : "",
-                     c.liner.measured ? " and a profile with points about element_size_m apart" : "");
-}
-
 }  // namespace
 
 std::optional<MetCriterion> criterion_met(const Config& c, const LinerSurface& ring) {
@@ -219,7 +193,6 @@ ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fi
   s.surface = std::make_shared<LinerSurface>(build_liner_surface(c.mill, c.liner));
   s.warnings = wear_load_warnings(c, fitted);
   if (const std::string w = check_start_criteria(c, *s.surface); !w.empty()) s.warnings.push_back(w);
-  if (const std::string w = mesh_warning(c, *s.surface); !w.empty()) s.warnings.push_back(w);
   if (print_warnings)
     for (const std::string& m : s.warnings) std::cerr << "linerlife: warning: " << m << "\n";
   s.input.initial = s.surface.get();

@@ -90,6 +90,8 @@ namespace {
 using V = Eigen::Vector2d;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+}  // namespace
+
 /// True if the cell's part of a displaced ring (its elements and one on each
 /// side) crosses itself. Between remeshes the nodes move along their offset
 /// directions; where a worn lifter has become a needle with notches smaller
@@ -104,6 +106,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// likely a touching point right after a remesh, which starts the root at -1
 /// so that no crossing is ever seen). Not investigated further.
 bool cell_folds(const LinerSurface& s, int n_cell) {
+  using V = Eigen::Vector2d;
   const int n = s.n_nodes();
   auto at = [&](int i) -> const V& { return s.nodes[static_cast<size_t>(((i % n) + n) % n)]; };
   auto orient = [](const V& a, const V& b, const V& c) {
@@ -135,6 +138,8 @@ bool cell_folds(const LinerSurface& s, int n_cell) {
   }
   return false;
 }
+
+namespace {
 
 /// The representative cell of the ring: segments 0 .. p-1, repeated by rotation.
 class Cell {

@@ -154,6 +154,11 @@ int pattern_period(const LinerSurface& s);
 /// turned over. The forecast remeshes where it reaches 0.
 double min_element_projection(const LinerSurface& base, const LinerSurface& ring, int n_cell);
 
+/// True if the cell's part of a displaced ring (elements -1 .. n_cell, the
+/// cell's and one on each side) crosses itself properly (a point lying on
+/// another element does not count). The forecast remeshes where it turns true.
+bool cell_folds(const LinerSurface& s, int n_cell);
+
 /// Smoothing of element values along the closed surface, `passes` times: a
 /// flux-form 1-2-1 filter that keeps sum(length x value) exactly, keeps a
 /// uniform field uniform for any element lengths, and creates no new extrema.

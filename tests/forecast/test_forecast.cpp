@@ -455,6 +455,41 @@ TEST_CASE("an element's projection on its former self: 1 unmoved, 0 turned 90 de
   CHECK(min_element_projection(plate, t, plate.segment_begin[1]) == Approx(0.0).margin(1e-12));
 }
 
+TEST_CASE("a displaced ring that crosses itself is seen as folded", "[forecast][geometry]") {
+  // The fold root (docs/models/forecast.md): a worn lifter's notch node that
+  // passes through the needle crosses the ring over itself. Until 2026-12-05
+  // the 100-mill soak's run 90 (test_soak.cpp) reached such a needle.
+  const LinerSurface s = build_liner_surface(qiu(), liner());
+  const int n = s.segment_begin[1];
+  CHECK_FALSE(cell_folds(s, n));
+  // the two face nodes nearest half the lifter's height, one on each side of the crest
+  int top = 0;
+  for (int i = 0; i < n; ++i)
+    if (s.nodes[i].norm() < s.nodes[top].norm()) top = i;
+  const double mid = 0.5 * (s.nodes[0].norm() + s.nodes[top].norm());
+  int i1 = 0, i2 = n - 1;
+  for (int i = 0; i < n; ++i) {
+    const double d = std::abs(s.nodes[i].norm() - mid);
+    if (i < top && d < std::abs(s.nodes[i1].norm() - mid)) i1 = i;
+    if (i > top && d < std::abs(s.nodes[i2].norm() - mid)) i2 = i;
+  }
+  INFO("crest node " << top << ", face nodes " << i1 << " and " << i2);
+  REQUIRE(std::abs(s.nodes[i1].norm() - mid) < 0.01);
+  REQUIRE(std::abs(s.nodes[i2].norm() - mid) < 0.01);
+  // one face node pushed through the lifter and out past the other face
+  LinerSurface t = s;
+  t.nodes[i1] = s.nodes[i2] + (s.nodes[i2] - s.nodes[i1]);
+  CHECK(cell_folds(t, n));
+  // moved a little along its face, not across the lifter: no fold
+  LinerSurface u = s;
+  u.nodes[i1] = s.nodes[i1] + 0.3 * (s.nodes[s.next(i1)] - s.nodes[i1]);
+  CHECK_FALSE(cell_folds(u, n));
+  // the same push in the next segment, outside the cell and its two side elements: not this cell's fold
+  LinerSurface v = s;
+  v.nodes[n + i1] = s.nodes[n + i2] + (s.nodes[n + i2] - s.nodes[n + i1]);
+  CHECK_FALSE(cell_folds(v, n));
+}
+
 /// The ring with a node added 1 mm from every convex corner of more than
 /// 45 deg, on the element after it: a short element at each crest corner, as
 /// a remesh can leave one (the bundled forecast's had elements of about 1 mm
