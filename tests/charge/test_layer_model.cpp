@@ -643,11 +643,11 @@ TEST_CASE("the liner loads land where the disc touches, whatever the contact ray
   // docs/models/layer.md §Liner loads, "Where a load lands". Until
   // 2026-12-05 a load went to the element its ride-table bin's smaller edge
   // touches: up to a bin (16 mm on the Qiu mill) towards the crest. On the
-  // bundled lifter that put the mean of the normal load 15 mm higher than
-  // rays 0.25 mm apart do (0.2031 against 0.1884 m above the plate) and half
-  // the plate's share on the lifter (8.0 against 15.8 %; this test's measures
-  // on the old rule), and made the forecast's life depend on the element size
-  // (docs/validation/forecast.md).
+  // bundled lifter that put the mean of the normal load 11 mm higher than
+  // rays 0.25 mm apart do (0.2031 against 0.1920 m above the plate) and about
+  // half the plate's share on the lifter (8.0 against 14.7 %; this test's
+  // measures on the old code), and made the forecast's life depend on the
+  // element size (docs/validation/forecast.md).
   const Config c = load_default_config();
   const LinerSurface s10 = build_liner_surface(c.mill, c.liner);
   LinerDesign fine = c.liner;
