@@ -31,7 +31,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STUDIES = [
     ("rtol", "forecast", "rtol", [1e-3, 1e-4, 1e-5, 1e-6], {}, "CVODE relative tolerance"),
     ("refresh", "forecast", "refresh_tol_m", [0.008, 0.004, 0.002, 0.001], {}, "charge re-drive tolerance [m]"),
-    ("element", "liner", "element_size_m", [0.02, 0.01, 0.005], {}, "surface element size [m]"),
+    ("element", "liner", "element_size_m", [0.02, 0.01, 0.005, 0.0025, 0.0015], {}, "surface element size [m]"),
     ("revolutions", "forecast", "revolutions_per_drive", [2.5, 5, 10, 20], {}, "revolutions averaged per drive"),
     ("secant", "forecast", "refresh_tol_m", [0.004, 0.002, 0.001], {"rate_model": '"secant"'},
      "charge re-drive tolerance [m] with secant rates"),
