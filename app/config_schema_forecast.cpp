@@ -59,9 +59,15 @@ void add_forecast_keys(Schema& s) {
                          "drives; smooth models only, docs/validation/forecast.md)",
                          {"secant", "frozen"}, "frozen", [](Config& c, const std::string& v) { c.forecast.rate_model = v; },
                          [](const Config& c) { return c.forecast.rate_model; }));
-  K.push_back(int_key("forecast", "rate_smoothing_passes", "Flux-form 1-2-1 smoothing passes over the rate field", 0, 50,
-                      false, [](Config& c, long long v) { c.forecast.rate_smoothing_passes = static_cast<int>(v); },
+  K.push_back(int_key("forecast", "rate_smoothing_passes",
+                      "Flux-form 1-2-1 smoothing passes over the rate field, at least (more where rate_smoothing_m asks)",
+                      0, 50, false, [](Config& c, long long v) { c.forecast.rate_smoothing_passes = static_cast<int>(v); },
                       [](const Config& c) { return static_cast<long long>(c.forecast.rate_smoothing_passes); }, 2));
+  K.push_back(real_key("forecast", "rate_smoothing_m", "m",
+                       "Smooth the rate field over at least this length along the surface (the passes' standard "
+                       "deviation on elements of element_size_m; 0: rate_smoothing_passes alone)",
+                       0.0, 0.2, false, false, 0.01, [](Config& c, double v) { c.forecast.rate_smoothing_m = v; },
+                       [](const Config& c) { return c.forecast.rate_smoothing_m; }));
   K.push_back(real_key("forecast", "revolutions_per_drive", "rev", "Mill revolutions averaged per charge drive", 0.5,
                        1000.0, false, false, 10.0, [](Config& c, double v) { c.forecast.revolutions_per_drive = v; },
                        [](const Config& c) { return c.forecast.revolutions_per_drive; }));

@@ -159,6 +159,14 @@ double min_element_projection(const LinerSurface& base, const LinerSurface& ring
 /// another element does not count). The forecast remeshes where it turns true.
 bool cell_folds(const LinerSurface& s, int n_cell);
 
+/// How many passes of smooth_along_surface() a drive's rate field gets: at
+/// least `min_passes`, and enough for a smoothing length (the standard
+/// deviation of the passes, h sqrt(p / 2) on elements of length h) of at
+/// least `length_m` on elements of the remesh's size h = `element_size_m`:
+/// round(2 (length_m / h)^2), at most kMaxSmoothingPasses.
+constexpr int kMaxSmoothingPasses = 2000;
+int smoothing_passes(double element_size_m, int min_passes, double length_m);
+
 /// Smoothing of element values along the closed surface, `passes` times: a
 /// flux-form 1-2-1 filter that keeps sum(length x value) exactly, keeps a
 /// uniform field uniform for any element lengths, and creates no new extrema.

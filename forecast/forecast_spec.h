@@ -23,7 +23,9 @@ struct ForecastSpec {
   bool refresh_always = false;       // re-drive on every right-hand side (refresh = "always")
   std::string rate_model = "frozen";  // between drives: "frozen" (rates of the last drive) | "secant" (linear in the path);
                                       // frozen by default: docs/validation/forecast.md (the secant amplifies drive noise)
-  int rate_smoothing_passes = 2;     // conservative 1-2-1 passes over element rates along the surface
+  int rate_smoothing_passes = 2;     // conservative 1-2-1 passes over element rates along the surface, at least
+  double rate_smoothing_m = 0.01;    // [m] and at least this smoothing length on elements of the remesh's size
+                                     //     (the passes' standard deviation): smoothing_passes(), docs/models/forecast.md
   double revolutions_per_drive = 10;  // [rev] averaged per charge drive (docs/validation/forecast.md: the mean life over realisations at 10 is within 0.2 % of 40)
   double remesh_depth_m = 0;         // [m] remesh once any node receded this far; 0: half the element size
   // end-of-life criteria: the first reached ends the life

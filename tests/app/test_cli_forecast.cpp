@@ -303,8 +303,10 @@ TEST_CASE("compare --vary forecasts one case per value and ranks them in a table
 // (16 mm on this mill) were loaded in a comb and tilted on the roughness it
 // left, and the life went from 9,173 h at 10 mm to 19,047 h at 1.5 mm. This
 // run to 2,500 h (2 revolutions a drive) then gave lifters 7.5 mm apart
-// (0.2104 and 0.2180 m) and liners 507 kg/m apart (1.2 %); now 1.1 mm and
-// 51 kg/m.
+// (0.2104 and 0.2180 m) and liners 507 kg/m apart (1.2 %); with the loads
+// where the disc touches 1.1 mm and 51 kg/m, and with the rate field
+// smoothed over 10 mm at every element size (smoothing_passes()) 0.2 mm
+// and 13 kg/m.
 TEST_CASE("the forecast's wear does not depend on the element size", "[app][cli][forecast]") {
   const fs::path dir = temp_dir("fc_element_size");
   std::string t = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/qiu2001_sag.toml");

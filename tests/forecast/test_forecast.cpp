@@ -352,6 +352,44 @@ TEST_CASE("rate smoothing keeps the wear, keeps uniform fields and adds no extre
   CHECK(after == Approx(before).epsilon(1e-12));
 }
 
+TEST_CASE("the rate field is smoothed over the same length whatever the element size", "[forecast][smoothing]") {
+  // smoothing_passes(): the 1-2-1 passes have a variance of h^2 / 2 each on
+  // elements of length h, so 2 (L / h)^2 passes smooth over a standard
+  // deviation L. Until 2026-12-05 the passes were fixed (2): 10 mm on the
+  // default elements, 2 mm on 2 mm ones, and the bundled forecast's lifter
+  // rose 7 mm from 10 to 1.5 mm elements (docs/validation/forecast.md).
+  CHECK(smoothing_passes(0.01, 2, 0.01) == 2);  // the default: as before
+  CHECK(smoothing_passes(0.02, 2, 0.01) == 2);  // coarser: the passes asked for
+  CHECK(smoothing_passes(0.002, 2, 0.01) == 50);
+  CHECK(smoothing_passes(0.002, 2, 0.0) == 2);
+  CHECK(smoothing_passes(0.002, 80, 0.01) == 80);
+  CHECK(smoothing_passes(1e-5, 2, 0.01) == kMaxSmoothingPasses);
+  // the spread of a spike of wear on a plain plate, measured along the surface
+  for (const double h : {0.01, 0.004, 0.002, 0.001}) {
+    LinerDesign d = liner(0);
+    d.element_size_m = h;
+    const LinerSurface s = build_liner_surface(qiu(), d);
+    const int n = s.n_elements(), i0 = n / 2;
+    std::vector<double> v(static_cast<size_t>(n), 0.0);
+    v[i0] = 1.0 / s.length[i0];
+    const std::vector<double> sm = smooth_along_surface(s, v, smoothing_passes(h, 2, 0.01));
+    double mass = 0, var = 0, arc = 0;
+    std::vector<double> at(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) {
+      at[i] = arc + 0.5 * s.length[i];
+      arc += s.length[i];
+    }
+    for (int i = 0; i < n; ++i) {
+      mass += sm[i] * s.length[i];
+      var += sm[i] * s.length[i] * (at[i] - at[i0]) * (at[i] - at[i0]);
+    }
+    INFO("element " << h << " m: " << smoothing_passes(h, 2, 0.01) << " passes, standard deviation "
+                    << std::sqrt(var / mass) << " m");
+    CHECK(mass == Approx(1.0).epsilon(1e-12));
+    CHECK(std::sqrt(var / mass) == Approx(0.01).epsilon(0.03));
+  }
+}
+
 TEST_CASE("a forecast resumed from any checkpoint ends exactly as the uninterrupted run", "[forecast][resume]") {
   const LinerSurface s = build_liner_surface(qiu(), liner());
   // a feedback field on the lifter: deeper on the leading side and at the top
