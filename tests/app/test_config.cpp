@@ -117,6 +117,12 @@ TEST_CASE("syntax, unknown keys, types, ranges and missing keys are refused with
   refused(edited("charge", "filling", "0.5"), {"filling = 0.5", "0.01 <= value < 0.5"});
   refused(edited("charge", "filling", "0.0"), {"filling = 0:", "out of range"});
   refused(edited("model", "time_step_s", "-0.01"), {"time_step_s = -0.01", "out of range"});
+  // the forecast's smoothing length (2026-12-05): a length, 0 to 0.2 m
+  refused(edited("forecast", "rate_smoothing_m", "-0.01"),
+          {"[forecast] rate_smoothing_m = -0.01: out of range; allowed 0 <= value <= 0.2 m"});
+  refused(edited("forecast", "rate_smoothing_m", "0.5"), {"rate_smoothing_m = 0.5: out of range"});
+  refused(edited("forecast", "rate_smoothing_m", "\"10 mm\""), {"rate_smoothing_m", "expected a number"});
+  CHECK(load_config_text(edited("forecast", "rate_smoothing_m", "0"), "mill.toml", ".").forecast.rate_smoothing_m == 0);
   refused(edited("model", "variant", "1.2"), {"variant", "expected a string"});
   refused(edited("model", "charge", "\"fem\""), {"charge = \"fem\"", "\"empirical\", \"layer\", \"dem\""});
   refused(removed("diameter_m"), {"missing required key [mill] diameter_m"});
