@@ -572,20 +572,52 @@ void LayerSim::setup_pocket_loads() {
   pocket_layers_ = static_cast<int>(std::ceil((ride_.max_ride_m - ride_.min_ride_m) / d_)) + 1;
   const int seg0 = canon_.segment_of_physical_0;
   const double cos_face_max = std::cos(kPocketFaceDeg * kPi / 180.0);  // the contact normal within this of e_t
-  // the direction of the liner's push on a disc resting at bin bb's centre:
-  // from the nearest point of the touched element to the disc's centre (the
-  // element's normal on a face, the bisecting direction on a corner)
+  // The direction of the liner's push on a disc at c touching element e:
+  // from the nearest point of the element to the disc's centre (the
+  // element's normal on a face, the bisecting direction on a corner).
   const LinerSurface& sf = canon_.surface;
-  auto contact_normal = [&](int bb) {
-    const double psi = (bb + 0.5) * ride_.bin_rad;
-    const V c = ride_.ride_radius_m[bb] * V(std::cos(psi), std::sin(psi));
-    const int e = ride_.support_element[bb];
+  auto push_normal = [&](const V& c, int e) {
     const V a = sf.nodes[e], ab = sf.nodes[sf.next(e)] - a;
     const double t = std::clamp((c - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
     const V d = c - (a + t * ab);
     const double len = d.norm();
     return len > 1e-12 ? V(d / len) : sf.normal[e];
   };
+  // Whether a bin faces the push is judged at its centre, on the element the
+  // disc touches there (the nearest contact ray's, as every other load lands:
+  // docs/models/layer.md §7, "Where a load lands").
+  auto centre_normal = [&](int bb) {
+    const double psi = (bb + 0.5) * ride_.bin_rad;
+    return push_normal(ride_.ride_radius_m[bb] * V(std::cos(psi), std::sin(psi)), ride_.contact(psi));
+  };
+  // A bin's push is spread over its contact rays (trapezoidal weights: the
+  // rays on its two edges count half, as each is shared with the next bin),
+  // each loading the element a disc on that ray touches, with the disc's
+  // centre on the ride polyline there. One element per bin left a comb on
+  // the faces: on the Qiu mill's 20 deg faces a quarter of the 10 mm
+  // elements took a push (test "pocket loads land where the disc touches,
+  // whatever the contact rays and the element size").
+  // Per contact ray j (bin j / m, ray j % m of it): the element touched,
+  // the push's normal there, the ring's tangent e_t and the disc's radius,
+  // computed once (the bands of all pockets and layers share them).
+  const int m_rays = ride_.contact_rays_per_bin;
+  const size_t n_rays = ride_.contact_element.size();
+  struct Ray {
+    int element;
+    V n, et;
+    double r;
+  };
+  std::vector<Ray> rays(n_rays);
+  for (size_t j = 0; j < n_rays; ++j) {
+    const int bb = static_cast<int>(j / m_rays), b1 = bb + 1 == nb ? 0 : bb + 1;
+    const double psi = static_cast<double>(j) / m_rays * ride_.bin_rad;
+    const V u(std::cos(psi), std::sin(psi));
+    const V p0 = ride_.point(bb), d = ride_.point(b1) - p0;
+    const double den = u.x() * d.y() - u.y() * d.x();
+    const double r = std::abs(den) > 1e-15 ? (p0.x() * d.y() - p0.y() * d.x()) / den : ride_.edge_radius_m[bb];
+    const int e = ride_.contact_element[j];
+    rays[j] = {e, push_normal(r * u, e), V(-u.y(), u.x()), r};
+  }
   std::vector<int> band;  // ride bins
   for (int dir = 0; dir < 2; ++dir) {
     const int step = dir == 0 ? -1 : 1;
@@ -617,30 +649,31 @@ void LayerSim::setup_pocket_loads() {
           if (i > 0 && !(ride_.ride_radius_m[bb] > rho - d_)) break;
           const double psi = (bb + 0.5) * ride_.bin_rad;
           const V et(-std::sin(psi), std::cos(psi));
-          if (sign * et.dot(contact_normal(bb)) >= cos_face_max) band.push_back(bb);
+          if (sign * et.dot(centre_normal(bb)) >= cos_face_max) band.push_back(bb);
         }
         if (band.empty()) continue;  // no face takes it: the pocket ends
         const size_t start = pocket_share_[dir].size();
         const double f = 1.0 / band.size();
-        for (const int bb : band) {
-          const int e = ride_.support_element[bb];
-          const V n = contact_normal(bb);  // into the mill
-          const double psi = (bb + 0.5) * ride_.bin_rad;
-          const V et(-std::sin(psi), std::cos(psi));
-          const double kn = sign * et.dot(n) * f;
-          const double ks = std::abs(et.x() * n.y() - et.y() * n.x()) * f;
-          const V lift = canon_.surface.element_segment[e] == seg0 ? V(-sign * f * et) : V(0, 0);
-          auto it = std::find_if(pocket_share_[dir].begin() + start, pocket_share_[dir].end(),
-                                 [&](const PocketShare& x) { return x.element == e; });
-          if (it == pocket_share_[dir].end()) {
-            pocket_share_[dir].push_back({e, kn, ks, ride_.ride_radius_m[bb] * kn, lift});
-          } else {
-            it->kn += kn;
-            it->ks += ks;
-            it->r += ride_.ride_radius_m[bb] * kn;
-            it->lifter += lift;
+        for (const int bb : band)
+          for (int i = 0; i <= m_rays; ++i) {
+            const Ray& ray = rays[(static_cast<size_t>(bb) * m_rays + i) % n_rays];
+            const double w = f * ((i == 0 || i == m_rays) ? 0.5 : 1.0) / m_rays;
+            const int e = ray.element;
+            const double kn = sign * ray.et.dot(ray.n) * w;
+            if (!(kn > 0)) continue;  // a ray of the bin past the corner: no face there
+            const double ks = std::abs(ray.et.x() * ray.n.y() - ray.et.y() * ray.n.x()) * w;
+            const V lift = canon_.surface.element_segment[e] == seg0 ? V(-sign * w * ray.et) : V(0, 0);
+            auto it = std::find_if(pocket_share_[dir].begin() + start, pocket_share_[dir].end(),
+                                   [&](const PocketShare& x) { return x.element == e; });
+            if (it == pocket_share_[dir].end()) {
+              pocket_share_[dir].push_back({e, kn, ks, ray.r * kn, lift});
+            } else {
+              it->kn += kn;
+              it->ks += ks;
+              it->r += ray.r * kn;
+              it->lifter += lift;
+            }
           }
-        }
         for (auto it = pocket_share_[dir].begin() + start; it != pocket_share_[dir].end(); ++it) it->r /= it->kn;
         depth = q + 1;
       }
