@@ -26,6 +26,13 @@ inline ChargeInput charge_input(const Config& c, const LinerSurface& s, double r
   return in;
 }
 
+/// The surface of configuration c's liner meshed with elements of `element_size_m`.
+inline LinerSurface surface_with_elements(const Config& c, double element_size_m) {
+  LinerDesign d = c.liner;
+  d.element_size_m = element_size_m;
+  return build_liner_surface(c.mill, d);
+}
+
 inline ChargeResult run_model(const std::string& name, const ChargeInput& in) {
   return find_charge_model(name).make()->run(in);
 }

@@ -650,9 +650,7 @@ TEST_CASE("the liner loads land where the disc touches, whatever the contact ray
   // element size (docs/validation/forecast.md).
   const Config c = load_default_config();
   const LinerSurface s10 = build_liner_surface(c.mill, c.liner);
-  LinerDesign fine = c.liner;
-  fine.element_size_m = 0.0025;
-  const LinerSurface s25 = build_liner_surface(c.mill, fine);
+  const LinerSurface s25 = surface_with_elements(c, 0.0025);
   const LoadPlace def = load_place(c, s10, 0), ref = load_place(c, s10, 0.00025), mesh = load_place(c, s25, 0);
   INFO("mean height above the plate: default " << def.mean_height_m << " m, rays 0.25 mm apart " << ref.mean_height_m
                                                << " m, elements 2.5 mm " << mesh.mean_height_m << " m; plate share "

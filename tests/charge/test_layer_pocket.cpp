@@ -214,16 +214,14 @@ TEST_CASE("pocket loads land where the disc touches, whatever the contact rays a
   // docs/models/layer.md §7, "Pocket loads". A bin's push is spread over
   // its contact rays, each loading the element a disc on it touches, as
   // every other load lands since 2026-12-05. Until then each bin loaded one
-  // element, its smaller edge's: on the Qiu mill's 20 deg faces the bins
-  // touch a face 40-50 mm apart, so most of a face took no push (this test's
-  // measures on that code: 0.24 of the face places at 10 mm elements and
-  // 0.06 at 2.5 mm took some; with one ray at each bin's centre 0.28 and 0.07,
-  // and the push at 2.5 mm elements 3.7 % short).
+  // element, its smaller edge's, and on the Qiu mill's 20 deg faces most
+  // elements took no push (this test's measures on that code: 0.24 of the
+  // face places at 10 mm elements and 0.06 at 2.5 mm took some; with one ray
+  // at each bin's centre 0.28 and 0.07, and the push at 2.5 mm elements
+  // 3.7 % short).
   const Config c = load_default_config();
   const LinerSurface s10 = build_liner_surface(c.mill, c.liner);
-  LinerDesign fine = c.liner;
-  fine.element_size_m = 0.0025;
-  const LinerSurface s25 = build_liner_surface(c.mill, fine);
+  const LinerSurface s25 = surface_with_elements(c, 0.0025);
   const FacePush def = face_push(c, s10, 0), ref = face_push(c, s10, 0.00025), mesh = face_push(c, s25, 0);
   INFO("added on the faces: " << def.added_n << ", " << ref.added_n << ", " << mesh.added_n
                               << " N/m; its mean height above the plate " << def.mean_height_m << ", "
