@@ -674,6 +674,7 @@ void LayerSim::setup_pocket_loads() {
               it->lifter += lift;
             }
           }
+        if (pocket_share_[dir].size() == start) continue;  // every ray past a corner: no face takes it
         for (auto it = pocket_share_[dir].begin() + start; it != pocket_share_[dir].end(); ++it) it->r /= it->kn;
         depth = q + 1;
       }
