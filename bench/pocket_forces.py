@@ -44,7 +44,6 @@ def parts(h5, ccw):
         normal = f["surface/normal"][:]
         fn = f["loads/normal_force_n_per_m"][:]
         fs = f["loads/shear_force_n_per_m"][:]
-    n = len(nodes)
     # the surface is one closed ring: element e joins node e to node e + 1 (the last to node 0)
     mid = 0.5 * (nodes + np.roll(nodes, -1, axis=0))
     r = np.linalg.norm(mid, axis=1)

@@ -590,13 +590,6 @@ void LayerSim::setup_pocket_loads() {
     const double psi = (bb + 0.5) * ride_.bin_rad;
     return push_normal(ride_.ride_radius_m[bb] * V(std::cos(psi), std::sin(psi)), ride_.contact(psi));
   };
-  // A bin's push is spread over its contact rays (trapezoidal weights: the
-  // rays on its two edges count half, as each is shared with the next bin),
-  // each loading the element a disc on that ray touches, with the disc's
-  // centre on the ride polyline there. One element per bin left a comb on
-  // the faces: on the Qiu mill's 20 deg faces a quarter of the 10 mm
-  // elements took a push (test "pocket loads land where the disc touches,
-  // whatever the contact rays and the element size").
   // Per contact ray j (bin j / m, ray j % m of it): the element touched,
   // the push's normal there, the ring's tangent e_t and the disc's radius,
   // computed once (the bands of all pockets and layers share them).
@@ -654,6 +647,14 @@ void LayerSim::setup_pocket_loads() {
         if (band.empty()) continue;  // no face takes it: the pocket ends
         const size_t start = pocket_share_[dir].size();
         const double f = 1.0 / band.size();
+        // A bin's push is spread over its contact rays (trapezoidal weights:
+        // the rays on its two edges count half, as each is shared with the
+        // next bin), each loading the element a disc on that ray touches,
+        // with the disc's centre on the ride polyline there. One element per
+        // bin left a comb on the faces: on the Qiu mill's 20 deg faces a
+        // quarter of the 10 mm elements took a push (test "pocket loads land
+        // where the disc touches, whatever the contact rays and the element
+        // size").
         for (const int bb : band)
           for (int i = 0; i <= m_rays; ++i) {
             const Ray& ray = rays[(static_cast<size_t>(bb) * m_rays + i) % n_rays];
