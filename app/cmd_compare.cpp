@@ -272,6 +272,11 @@ int run_compare(const CompareOptions& o) {
   // speeds compared by the layer model V-1.2: its power goes the wrong way
   const std::string speed = speed_trend_caveat(configs);
   if (!speed.empty()) note("linerlife: note: " + speed);
+  // a measured profile with points closer than a scan resolves: the lives scatter more
+  std::string dense;
+  for (const Case& k : cases)
+    if (dense.empty()) dense = dense_profile_caveat(k.config.liner);
+  if (!dense.empty()) note("linerlife: note: " + dense);
 
   if (o.json) {
     Json arr = Json::array();
@@ -297,7 +302,7 @@ int run_compare(const CompareOptions& o) {
       }
       arr.push(j);
     }
-    std::cout << Json::object().set("cases", arr).set("caveats", caveats_json(std::vector<std::string>{ranking, speed})).dump() << "\n";
+    std::cout << Json::object().set("cases", arr).set("caveats", caveats_json(std::vector<std::string>{ranking, speed, dense})).dump() << "\n";
   } else {
     size_t w = 36;
     for (const Case& k : cases) w = std::max(w, k.label.size() + 1);
@@ -347,7 +352,7 @@ int run_compare(const CompareOptions& o) {
       }
       {
         std::string all;  // one line per caveat
-        for (const std::string& c : {ranking, speed})
+        for (const std::string& c : {ranking, speed, dense})
           if (!c.empty()) all += (all.empty() ? "" : "\n") + c;
         if (!all.empty()) h5.attr("/cases", "caveat", all);
       }

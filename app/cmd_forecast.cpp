@@ -158,7 +158,10 @@ int run_forecast_command(const ForecastOptions& o) {
   if (drew) std::fprintf(stderr, "\n");
   note_drive_notes(f.notes, f.stats.charge_redrives);
   const LifeRecord& last = f.history.back();
-  const std::string caveat = worn_power_caveat(c.model.charge, f.history);
+  const std::vector<std::string> caveats{worn_power_caveat(c.model.charge, f.history), dense_profile_caveat(c.liner)};
+  std::string caveat;  // one line per caveat, as forecast.h5 keeps them
+  for (const std::string& x : caveats)
+    if (!x.empty()) caveat += (caveat.empty() ? "" : "\n") + x;
 
   if (o.json) {
     Json hist = Json::object();
@@ -199,7 +202,7 @@ int run_forecast_command(const ForecastOptions& o) {
         .set("charge_simulated_s", f.stats.charge_simulated_s)
         .set("wall_s", f.stats.wall_s)
         .set("charge_notes", drive_notes_json(f.notes))
-        .set("caveats", caveats_json(caveat))
+        .set("caveats", caveats_json(caveats))
         .set("history", hist);
     std::cout << j.dump() << "\n";
   } else {
@@ -230,7 +233,8 @@ int run_forecast_command(const ForecastOptions& o) {
   }
   // after the summary it qualifies (its net power line)
   std::cout.flush();
-  if (!caveat.empty()) note("linerlife: note: " + caveat);
+  for (const std::string& x : caveats)
+    if (!x.empty()) note("linerlife: note: " + x);
 
   if (dir) {
     dir->prepare();

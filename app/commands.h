@@ -122,6 +122,15 @@ std::string worn_power_caveat(const std::string& charge_model, const std::vector
                               const std::vector<double>& net_power_kw);
 /// The same from a forecast's history.
 std::string worn_power_caveat(const std::string& charge_model, const std::vector<LifeRecord>& history);
+/// A caveat on a forecast from a measured profile whose points are closer
+/// than kDenseProfileCaveatSpacingM (the median spacing), or "" if none is
+/// due. Such a profile keeps every point as a surface node until the first
+/// remesh, and the rates on those short elements are rough: a forecast of
+/// the bundled lifter cut into 5,000 points (0.17 mm apart) scattered by
+/// 1.76 % over five realisations of the layer model's sampling, cut into
+/// 500 (1.6 mm) by 0.30 %, as the parametric lifter (docs/profile-csv.md).
+constexpr double kDenseProfileCaveatSpacingM = 1e-3;
+std::string dense_profile_caveat(const LinerDesign& liner);
 /// A caveat as it goes into --json: an array of {text}, empty without one.
 Json caveats_json(const std::string& caveat);
 /// Several caveats (the empty ones left out) as one --json array of {text}.

@@ -144,6 +144,91 @@ TEST_CASE("the layer model's power history carries a caveat when it departs from
   CHECK(worn_power_caveat("layer", h, {6000, nan, 9000, 6100}).find("+50 %") != std::string::npos);
 }
 
+TEST_CASE("a measured profile denser than 1 mm carries a caveat", "[app][forecast]") {
+  LinerDesign L;
+  CHECK(dense_profile_caveat(L).empty());  // parametric
+  L.measured = true;
+  auto line = [&](double spacing) {  // a straight profile 0.5 m long
+    L.profile.points.clear();
+    for (double x = 0; x <= 0.5 + 1e-12; x += spacing) L.profile.points.emplace_back(x, 0.075);
+  };
+  line(0.0002);
+  const std::string c = dense_profile_caveat(L);
+  CHECK_THAT(c, Catch::Contains("0.20 mm apart (median)"));
+  CHECK_THAT(c, Catch::Contains("docs/profile-csv.md"));
+  line(0.0016);  // a scan's spacing: none
+  CHECK(dense_profile_caveat(L).empty());
+  line(0.00099);
+  CHECK_FALSE(dense_profile_caveat(L).empty());
+  // the median, not the smallest gap: a few close points at corners do not count
+  line(0.0016);
+  for (int i = 0; i < 20; ++i) L.profile.points.emplace_back(0.5 + 1e-4 * (i + 1), 0.075);
+  CHECK(dense_profile_caveat(L).empty());
+}
+
+TEST_CASE("a forecast from a dense measured profile says so, in the JSON, on stderr and in the file",
+          "[app][cli][forecast]") {
+  // the new lifter of the test mill as a profile CSV, every element cut into
+  // pieces of at most 0.25 mm (a dense scan), and as its nodes alone
+  const fs::path dir = temp_dir("fc_dense");
+  write_file(dir / "m.toml", fast_qiu("max_operating_hours = 200\n"));
+  const RunResult f = run_linerlife("forecast " + (dir / "m.toml").string() + " --quiet --out " + (dir / "new").string());
+  INFO(f.err);
+  REQUIRE(f.code == 0);
+  const H5Reader h5((dir / "new" / "forecast.h5").string());
+  const auto xy = h5.doubles("/forecast/profiles/nodes");
+  const auto off = h5.ints("/forecast/profiles/offset");
+  const double R = h5.attr_double("/surface", "shell_radius_m");
+  std::vector<Eigen::Vector2d> nodes;
+  for (long long k = off[0]; k < off[1]; ++k) nodes.emplace_back(xy[2 * k], xy[2 * k + 1]);
+  const auto p = segment_to_profile_xy(nodes, R, 0.0, 2 * M_PI / 64);
+  std::ofstream dense(dir / "dense.csv"), coarse(dir / "coarse.csv");
+  for (size_t k = 0; k < p.size(); ++k) {
+    coarse << p[k].x() << "," << p[k].y() << "\n";
+    if (k + 1 == p.size()) {
+      dense << p[k].x() << "," << p[k].y() << "\n";
+      break;
+    }
+    const int n = static_cast<int>(std::ceil((p[k + 1] - p[k]).norm() / 0.00025));
+    for (int i = 0; i < n; ++i) {
+      const Eigen::Vector2d q = p[k] + (p[k + 1] - p[k]) * (static_cast<double>(i) / n);
+      // no point within 1.5 mm of a segment edge but the ends (a radial step there is refused)
+      if (k + i > 0 && (q.x() < 0.0015 || q.x() > p.back().x() - 0.0015)) continue;
+      dense << fmt::format("{:.9f},{:.9f}\n", q.x(), q.y());
+    }
+  }
+  dense.close();
+  coarse.close();
+  for (const char* which : {"dense", "coarse"}) {
+    std::string t = fast_qiu("max_operating_hours = 200\n");
+    t = std::regex_replace(t, std::regex("\\[liner\\]\n"), std::string("[liner]\nprofile_csv = \"") + which + ".csv\"\n");
+    write_file(dir / (std::string(which) + ".toml"), t);
+    const RunResult r = run_linerlife("forecast " + (dir / (std::string(which) + ".toml")).string() + " --json --out " +
+                                      (dir / which).string());
+    INFO(which << ": " << r.err);
+    REQUIRE(r.code == 0);
+    const JsonValue j = parse_json(r.out);
+    int dense_caveats = 0;
+    for (const auto& c : j["caveats"].items())
+      if (c["text"].str().find("points are") != std::string::npos) {
+        ++dense_caveats;
+        CHECK(r.err.find(c["text"].str()) != std::string::npos);  // also printed as a note
+        CHECK_THAT(H5Reader((dir / which / "forecast.h5").string()).attr_string("/forecast", "caveat"),
+                   Catch::Contains(c["text"].str()));
+      }
+    CHECK(dense_caveats == (std::string(which) == "dense" ? 1 : 0));
+  }
+  // compare says it once for the comparison
+  const RunResult c = run_linerlife("compare " + (dir / "dense.toml").string() +
+                                    " --vary forecast.max_operating_hours=100,200 --json --jobs 1");
+  INFO(c.err);
+  REQUIRE(c.code == 0);
+  const JsonValue jc = parse_json(c.out);
+  int n = 0;
+  for (const auto& cv : jc["caveats"].items()) n += cv["text"].str().find("points are") != std::string::npos;
+  CHECK(n == 1);
+}
+
 TEST_CASE("forecast --out writes the results file and its charts, and plot redraws them", "[app][cli][forecast][plot]") {
   const fs::path dir = temp_dir("fc_out");
   write_file(dir / "m.toml", fast_qiu());
