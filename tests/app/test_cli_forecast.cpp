@@ -227,6 +227,7 @@ TEST_CASE("a forecast from a dense measured profile says so, in the JSON, on std
   int n = 0;
   for (const auto& cv : jc["caveats"].items()) n += cv["text"].str().find("points are") != std::string::npos;
   CHECK(n == 1);
+  fs::remove_all(dir);
 }
 
 TEST_CASE("forecast --out writes the results file and its charts, and plot redraws them", "[app][cli][forecast][plot]") {
