@@ -350,12 +350,8 @@ int run_compare(const CompareOptions& o) {
         for (size_t a = 0; a < cases.front().varied.size(); ++a) keys += (a ? "\n" : "") + cases.front().varied[a].first;
         h5.attr("/cases", "varied_keys", keys);
       }
-      {
-        std::string all;  // one line per caveat
-        for (const std::string& c : {ranking, speed, dense})
-          if (!c.empty()) all += (all.empty() ? "" : "\n") + c;
-        if (!all.empty()) h5.attr("/cases", "caveat", all);
-      }
+      const std::string all = caveat_lines({ranking, speed, dense});
+      if (!all.empty()) h5.attr("/cases", "caveat", all);
       h5.dataset("/cases/operating_hours", hours, {hours.size()}, "h");
       h5.dataset("/cases/mean_net_power_kw", mean_p, {mean_p.size()}, "kW");
       h5.dataset("/cases/final_net_power_kw", end_p, {end_p.size()}, "kW");

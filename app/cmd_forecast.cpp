@@ -159,9 +159,7 @@ int run_forecast_command(const ForecastOptions& o) {
   note_drive_notes(f.notes, f.stats.charge_redrives);
   const LifeRecord& last = f.history.back();
   const std::vector<std::string> caveats{worn_power_caveat(c.model.charge, f.history), dense_profile_caveat(c.liner)};
-  std::string caveat;  // one line per caveat, as forecast.h5 keeps them
-  for (const std::string& x : caveats)
-    if (!x.empty()) caveat += (caveat.empty() ? "" : "\n") + x;
+  const std::string caveat = caveat_lines(caveats);  // as forecast.h5 keeps them
 
   if (o.json) {
     Json hist = Json::object();

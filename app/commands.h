@@ -135,6 +135,8 @@ std::string dense_profile_caveat(const LinerDesign& liner);
 Json caveats_json(const std::string& caveat);
 /// Several caveats (the empty ones left out) as one --json array of {text}.
 Json caveats_json(const std::vector<std::string>& caveats);
+/// The same as one text, a line per caveat (the results files' `caveat` attribute).
+std::string caveat_lines(const std::vector<std::string>& caveats);
 
 /// `compare` of lifter designs by the layer model: its ranking of designs is
 /// not the DEM's everywhere (docs/validation/ball-mill.md, "Ranking lifter

@@ -274,6 +274,13 @@ Json caveats_json(const std::vector<std::string>& caveats) {
   return a;
 }
 
+std::string caveat_lines(const std::vector<std::string>& caveats) {
+  std::string all;
+  for (const std::string& c : caveats)
+    if (!c.empty()) all += (all.empty() ? "" : "\n") + c;
+  return all;
+}
+
 Json caveats_json(const std::string& caveat) {
   Json a = Json::array();
   if (!caveat.empty()) {

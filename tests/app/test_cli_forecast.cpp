@@ -16,6 +16,7 @@
 #include "app/h5_reader.h"
 #include "cli_runner.h"
 #include "geometry/measured_profile.h"
+#include "geometry/resample.h"
 #include "tests/app/json_lite.h"
 
 using namespace linerlife;
@@ -183,19 +184,13 @@ TEST_CASE("a forecast from a dense measured profile says so, in the JSON, on std
   for (long long k = off[0]; k < off[1]; ++k) nodes.emplace_back(xy[2 * k], xy[2 * k + 1]);
   const auto p = segment_to_profile_xy(nodes, R, 0.0, 2 * M_PI / 64);
   std::ofstream dense(dir / "dense.csv"), coarse(dir / "coarse.csv");
-  for (size_t k = 0; k < p.size(); ++k) {
-    coarse << p[k].x() << "," << p[k].y() << "\n";
-    if (k + 1 == p.size()) {
-      dense << p[k].x() << "," << p[k].y() << "\n";
-      break;
-    }
-    const int n = static_cast<int>(std::ceil((p[k + 1] - p[k]).norm() / 0.00025));
-    for (int i = 0; i < n; ++i) {
-      const Eigen::Vector2d q = p[k] + (p[k + 1] - p[k]) * (static_cast<double>(i) / n);
-      // no point within 1.5 mm of a segment edge but the ends (a radial step there is refused)
-      if (k + i > 0 && (q.x() < 0.0015 || q.x() > p.back().x() - 0.0015)) continue;
-      dense << fmt::format("{:.9f},{:.9f}\n", q.x(), q.y());
-    }
+  for (const Eigen::Vector2d& q : p) coarse << q.x() << "," << q.y() << "\n";
+  const std::vector<Eigen::Vector2d> d = resample_polyline(p, 0.00025);
+  for (size_t k = 0; k < d.size(); ++k) {
+    // no point within 1.5 mm of a segment edge but the ends (a radial step there is refused)
+    const bool end = k == 0 || k + 1 == d.size();
+    if (!end && (d[k].x() < 0.0015 || d[k].x() > d.back().x() - 0.0015)) continue;
+    dense << fmt::format("{:.9f},{:.9f}\n", d[k].x(), d[k].y());
   }
   dense.close();
   coarse.close();
