@@ -215,8 +215,11 @@ class LayerSim {
   /// arc); -1 if it rests on the plate further ahead.
   int pocket_lifter(int j, int seg, double psi) const;
   void check_flights(double t1);
-  /// The events of a step, in a heap ordered by time (then departures,
-  /// landings, checks; then index: deterministic).
+  /// The events of a step, ordered by time (then departures, landings,
+  /// checks; then index: deterministic). events_ is kept sorted latest first,
+  /// so that the next event is at its back: most events are known at the
+  /// start of the step and sorted once; the few that arise during it
+  /// (landings found, launches) are inserted in order.
   enum EventKind { kDepart = 0, kLand = 1, kCheck = 2 };
   struct StepEvent {
     double t;
@@ -228,10 +231,16 @@ class LayerSim {
     return x.index > y.index;
   }
   void push_event(const StepEvent& e) {
-    events_.push_back(e);
-    std::push_heap(events_.begin(), events_.end(), event_after);
+    events_.insert(std::lower_bound(events_.begin(), events_.end(), e, event_after), e);
   }
+  /// Flight i's next event in the current step (its landing, or the check of
+  /// its next interval) if it has one there, else the flight waits for the
+  /// first step that has (wait_flight()).
   void schedule_flight(int i);
+  /// Files flight i under the first step from step k_min on that has its next
+  /// event: the steps take their flights from there (check_flights()), not
+  /// from a scan of every flight.
+  void wait_flight(int i, long long k_min);
   /// Where the flight's unchecked path starts.
   static double next_check(const Flight& f) { return std::max({f.t_next, f.t_check, f.t0}); }
   bool check_flight(Flight& f, double t1, Landing& out);
@@ -359,6 +368,15 @@ class LayerSim {
   std::vector<double> phase0_;              // [rad] phase of each layer at t = 0 (the phase is phase0 + omega t)
   std::vector<Flight> flights_;
   std::vector<StepEvent> events_;
+  // The waiting flights, by element id, filed under the step of their next
+  // event (wait_flight()): a ring of kWakeRing steps from the current one,
+  // and the flights further ahead.
+  static constexpr int kWakeRing = 512;
+  std::vector<std::vector<int>> wake_ring_ = std::vector<std::vector<int>>(kWakeRing);
+  std::vector<std::pair<long long, int>> wake_far_;  // (step, element id)
+  std::vector<int> wake_due_;               // scratch of check_flights()
+  std::vector<int> flight_pos_;             // [element id] index in flights_ of its latest flight
+  long long step_k_ = 0;                    // index of the step check_flights() runs next (or is running)
   double step_t1_ = 0;
   bool in_step_ = false;  // inside check_flights(): a launch schedules its flight
   std::vector<DepartureEvent> dep_events_;
@@ -1048,13 +1066,17 @@ void LayerSim::launch(int j, int s, double tau, int seg, bool relaunch) {
   if (!relaunch && averaging_ && f.t0 >= t_avg0_ && f.t0 < t_end_)
     energy_ += m_ * (kGravity * (f.p0.y() - elem_y_entry_[id]) + 0.5 * f.v0.squaredNorm());
   ++n_flights_;
+  if (flight_pos_.empty()) flight_pos_.assign(N_, -1);
+  flight_pos_[id] = static_cast<int>(flights_.size());
   flights_.push_back(f);
   // A departure's flight is checked from its launch on (check_flights()). A
   // relaunch from a landing waits for the next step, as before the event
   // queue: an element that lands past its layer's flight angle against a
   // lifter can be relaunched into the liner at once, and would otherwise
   // bounce without end at one instant (found by the forecast soak, run 11).
-  if (in_step_ && !relaunch) schedule_flight(static_cast<int>(flights_.size()) - 1);
+  const int i = static_cast<int>(flights_.size()) - 1;
+  if (in_step_ && !relaunch) schedule_flight(i);
+  else wait_flight(i, in_step_ ? step_k_ + 1 : step_k_);
 }
 
 int LayerSim::pocket_lifter(int j, int seg, double psi) const {
@@ -1321,18 +1343,33 @@ void LayerSim::check_flights(double t1) {
     if (x.j != y.j) return x.j < y.j;
     return x.s < y.s;
   });
+  if (t1 != static_cast<double>(step_k_ + 1) * dt_)  // wait_flight() computes the steps' ends so
+    throw SimulationError("layer model: the steps and the flights' wake steps disagree");
   events_.clear();
   step_t1_ = t1;
-  for (int i = 0; i < static_cast<int>(dep_events_.size()); ++i) push_event({dep_events_[i].t, kDepart, i});
-  // (most flights have nothing to do in a step: the test first, inline)
-  for (int i = 0; i < static_cast<int>(flights_.size()); ++i) {
-    const Flight& f = flights_[i];
-    if (f.landed ? f.landing.t <= t1 : next_check(f) < t1) schedule_flight(i);
+  for (int i = 0; i < static_cast<int>(dep_events_.size()); ++i) events_.push_back({dep_events_[i].t, kDepart, i});
+  // the flights with something to do in this step: those filed under it
+  // (the flights further ahead move into the ring as it comes round to them)
+  wake_due_.swap(wake_ring_[step_k_ & (kWakeRing - 1)]);
+  if (!wake_far_.empty() && (step_k_ & (kWakeRing - 1)) == 0) {
+    size_t n = 0;
+    for (const auto& w : wake_far_) {
+      if (w.first - step_k_ >= kWakeRing) wake_far_[n++] = w;
+      else if (w.first == step_k_) wake_due_.push_back(w.second);
+      else wake_ring_[w.first & (kWakeRing - 1)].push_back(w.second);
+    }
+    wake_far_.resize(n);
   }
+  for (const int id : wake_due_) {
+    const int i = flight_pos_[id];
+    const Flight& f = flights_[i];
+    events_.push_back(f.landed ? StepEvent{f.landing.t, kLand, i} : StepEvent{next_check(f), kCheck, i});
+  }
+  wake_due_.clear();
+  std::sort(events_.begin(), events_.end(), event_after);
   in_step_ = true;
   gone_.clear();
   while (!events_.empty()) {
-    std::pop_heap(events_.begin(), events_.end(), event_after);
     const StepEvent ev = events_.back();
     events_.pop_back();
     if (ev.kind == kDepart) {
@@ -1348,7 +1385,7 @@ void LayerSim::check_flights(double t1) {
     if (ev.kind == kCheck) {
       // the path up to the next event (at least one interval), then the
       // flight waits for its next interval or its landing
-      double t_lim = events_.empty() ? t1 : std::min(t1, events_.front().t);
+      double t_lim = events_.empty() ? t1 : std::min(t1, events_.back().t);
       // at least one interval: check_flight() walks whole intervals, but
       // check_flight_drag() ends one at t_lim, so it gets one drag step (1 ms)
       t_lim = std::max(t_lim, drag_on_ ? next_check(f) + 1e-3 : next_up(next_check(f)));
@@ -1400,12 +1437,14 @@ void LayerSim::check_flights(double t1) {
     deposit(f.id, th, land.t, land.v);
   }
   in_step_ = false;
+  ++step_k_;
   // remove the landed flights (highest index first, swapping in the last)
   if (gone_.empty()) return;
   std::sort(gone_.begin(), gone_.end(), std::greater<int>());
   for (const int i : gone_) {
     if (i != static_cast<int>(flights_.size()) - 1) {
       flights_[i] = flights_.back();
+      flight_pos_[flights_[i].id] = i;
     }
     flights_.pop_back();
   }
@@ -1417,10 +1456,36 @@ void LayerSim::schedule_flight(int i) {
   const Flight& f = flights_[i];
   if (f.landed) {
     if (f.landing.t <= step_t1_) push_event({f.landing.t, kLand, i});
+    else wait_flight(i, step_k_ + 1);
     return;
   }
   const double tc = next_check(f);
   if (tc < step_t1_) push_event({tc, kCheck, i});
+  else wait_flight(i, step_k_ + 1);
+}
+
+void LayerSim::wait_flight(int i, long long k_min) {
+  // The first step k >= k_min whose end t1 = (k + 1) dt (as run() computes
+  // it) the flight's event is due by, on the tests of schedule_flight();
+  // estimated from the time, then settled by those tests.
+  const Flight& f = flights_[i];
+  const bool landed = f.landed;
+  const double w = landed ? f.landing.t : next_check(f);
+  auto due = [&](long long k) {
+    const double t1 = static_cast<double>(k + 1) * dt_;
+    return landed ? w <= t1 : w < t1;
+  };
+  const double q = w / dt_;
+  if (!(q < 1e15)) {  // never (as the scan it replaced, which never found it due)
+    wake_far_.emplace_back(std::numeric_limits<long long>::max(), f.id);
+    return;
+  }
+  // k = floor(w / dt): k dt <= w < (k + 1) dt but for rounding
+  long long k = q > static_cast<double>(k_min) ? static_cast<long long>(q) : k_min;
+  while (k > k_min && due(k - 1)) --k;
+  while (!due(k)) ++k;
+  if (k - step_k_ < kWakeRing) wake_ring_[k & (kWakeRing - 1)].push_back(f.id);
+  else wake_far_.emplace_back(k, f.id);
 }
 
 // ============================================================================
