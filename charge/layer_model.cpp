@@ -1101,6 +1101,22 @@ int LayerSim::pocket_lifter(int j, int seg, double psi) const {
   return off * L_[j].r < foot + pocket_balls_ * d_ ? k : -1;
 }
 
+/// ceil for |x| < 2^62 without a libm call (as fast_floor()).
+inline double fast_ceil(double x) {
+  const double t = static_cast<double>(static_cast<long long>(x));
+  return t < x ? t + 1.0 : t;
+}
+
+/// std::remainder(x, 2 pi), without the libm call where |x| < 2 pi: x itself
+/// up to pi (at pi the tie goes to the even quotient 0), else x -+ 2 pi, which
+/// is exact there (Sterbenz) and so what std::remainder returns.
+inline double remainder_2pi(double x) {
+  const double ax = std::abs(x);
+  if (ax <= kPi) return x;
+  if (ax < kTwoPi) return x > 0 ? x - kTwoPi : x + kTwoPi;
+  return std::remainder(x, kTwoPi);
+}
+
 void LayerSim::departures(double t0, double t1) {
   dep_events_.clear();
   const double dt = t1 - t0;
@@ -1113,8 +1129,8 @@ void LayerSim::departures(double t0, double t1) {
       const double lo = std::min(l.rel_min, l.release), hi = std::max(l.rel_max, std::isfinite(l.release) ? l.release : -kInf);
       if (!std::isfinite(lo)) continue;
       const double u = wrap2pi(lo - l.phase);
-      const int s_lo = static_cast<int>(std::ceil((u - 2 * wdt) * l.inv_delta));
-      const int s_hi = static_cast<int>(std::ceil((u + (hi - lo)) * l.inv_delta));
+      const int s_lo = static_cast<int>(fast_ceil((u - 2 * wdt) * l.inv_delta));
+      const int s_hi = static_cast<int>(fast_ceil((u + (hi - lo)) * l.inv_delta));
       for (int s = s_lo; s <= s_hi; ++s) {
         int si = s % l.S;
         if (si < 0) si += l.S;
@@ -1128,7 +1144,7 @@ void LayerSim::departures(double t0, double t1) {
         const HeldLaunch& h = seg >= 0 ? held_[j][seg] : kUnheldLaunch;
         const double rel = h.held ? (h.released ? h.release : kInf) : l.release;
         if (!std::isfinite(rel)) continue;
-        const double w = std::remainder(rel - a0, kTwoPi);
+        const double w = remainder_2pi(rel - a0);
         if (w > -wdt && w <= wdt) dep_events_.push_back({t0 + w / l.omega, j, si, h.held ? seg : -1});
       }
     } else {
@@ -1136,8 +1152,8 @@ void LayerSim::departures(double t0, double t1) {
       // slots crossing the flight angle in this step, or in the previous one
       // after its scan (placed there by a landing): w in (-wdt, wdt]
       const double u = wrap2pi(l.release - l.phase);
-      const int s_lo = static_cast<int>(std::ceil((u - wdt) * l.inv_delta));
-      const int s_hi = static_cast<int>(std::ceil((u + wdt) * l.inv_delta)) - 1;
+      const int s_lo = static_cast<int>(fast_ceil((u - wdt) * l.inv_delta));
+      const int s_hi = static_cast<int>(fast_ceil((u + wdt) * l.inv_delta)) - 1;
       for (int s = s_lo; s <= s_hi; ++s) {
         int si = s % l.S;
         if (si < 0) si += l.S;
@@ -1209,8 +1225,11 @@ bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
     // the distance to the nearer (no check needed).
     // The clearance to the liner and to the innermost open layer holds at
     // any time; the one from the column map only for skip_H_ after it.
+    // (Near the liner the interval is a near one whatever the bed's clearance.)
     const double d_liner = r_ride_min - ra;
-    const double d_bed = ra < r_open_min_ ? r_open_min_ - ra : bed_clearance(ra, fast_atan2(pa.y(), pa.x()), tau);
+    const double d_bed = d_liner <= sample_len ? kInf
+                         : ra < r_open_min_    ? r_open_min_ - ra
+                                               : bed_clearance(ra, fast_atan2(pa.y(), pa.x()), tau);
     const double dist = std::min(d_liner, d_bed);
     if (dist > sample_len) {
       const double sp = std::max(spv, 1e-3);

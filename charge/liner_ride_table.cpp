@@ -12,10 +12,21 @@ namespace {
 
 using V = Eigen::Vector2d;
 constexpr double kTwoPi = 2.0 * kPi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double wrap_2pi(double a) {
   a = std::fmod(a, kTwoPi);
   return a < 0 ? a + kTwoPi : a;
+}
+
+/// std::remainder(x, 2 pi), without the libm call where |x| < 2 pi: x itself
+/// up to pi (at pi the tie goes to the even quotient 0), else x -+ 2 pi, which
+/// is exact there (Sterbenz) and so what std::remainder returns.
+inline double remainder_2pi(double x) {
+  const double ax = std::abs(x);
+  if (ax <= kPi) return x;
+  if (ax < kTwoPi) return x > 0 ? x - kTwoPi : x + kTwoPi;
+  return std::remainder(x, kTwoPi);
 }
 
 /// atan2 to about 1e-5 rad, enough to pick the bins to search.
@@ -236,7 +247,7 @@ bool first_ride_crossing(const LinerRideTable& t, double rot, const V& p0, const
   const V pa = p0 + v0 * ta + 0.5 * acc * ta * ta;
   const V pb = p0 + v0 * tb + 0.5 * acc * tb * tb;
   const double psa = fast_atan2(pa.y(), pa.x()) - rot, psb = fast_atan2(pb.y(), pb.x()) - rot;
-  double d = std::remainder(psb - psa, kTwoPi);
+  double d = remainder_2pi(psb - psa);
   // the polar angle of a parabola arc can turn by more than the chord says
   // when it passes close to the axis; such arcs are far from the liner, and
   // the caller only asks near it.
@@ -246,7 +257,9 @@ bool first_ride_crossing(const LinerRideTable& t, double rot, const V& p0, const
   if (lw < 0 || lw >= kTwoPi) lw = wrap_2pi(lw);
   const int b0 = static_cast<int>(lw * t.inv_bin) - 1;
   const int nb = static_cast<int>(std::ceil(std::abs(d) * t.inv_bin)) + 3;
-  const double c = std::cos(rot), s = std::sin(rot);
+  // (the layer model passes the path in the liner frame: rot = 0, no rotation)
+  const bool turned = rot != 0;
+  const double c = turned ? std::cos(rot) : 1.0, s = turned ? std::sin(rot) : 0.0;
   // quick reject: the arc stays inside the smallest ride radius of the bins it spans
   {
     const double rmax2 = std::max(pa.squaredNorm(), pb.squaredNorm());
@@ -271,8 +284,12 @@ bool first_ride_crossing(const LinerRideTable& t, double rot, const V& p0, const
     if (b < 0) b += t.n_bins;
     const int b1 = b + 1 == t.n_bins ? 0 : b + 1;
     const V q1l = t.point(b), q2l = t.point(b1);
-    const V q1(c * q1l.x() - s * q1l.y(), s * q1l.x() + c * q1l.y());
-    const V q2(c * q2l.x() - s * q2l.y(), s * q2l.x() + c * q2l.y());
+    // the rotation by 0 returns a point unchanged where its radius is
+    // positive and finite (no coordinate is -0 or infinite)
+    const double r1 = t.edge_radius_m[b], r2 = t.edge_radius_m[b1];
+    const bool keep = !turned && r1 > 0 && r2 > 0 && r1 < kInf && r2 < kInf;
+    const V q1 = keep ? q1l : V(c * q1l.x() - s * q1l.y(), s * q1l.x() + c * q1l.y());
+    const V q2 = keep ? q2l : V(c * q2l.x() - s * q2l.y(), s * q2l.x() + c * q2l.y());
     const V e = q2 - q1;
     const V m(-e.y(), e.x());  // points into the mill (polyline runs anticlockwise)
     // f(t) = (p(t) - q1) . m: > 0 inside, crossing outward where f falls through 0.
