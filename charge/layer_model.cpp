@@ -241,6 +241,7 @@ class LayerSim {
   /// event: the steps take their flights from there (check_flights()), not
   /// from a scan of every flight.
   void wait_flight(int i, long long k_min);
+  __attribute__((noinline)) void wait_far(long long k, int id);
   /// Where the flight's unchecked path starts.
   static double next_check(const Flight& f) { return std::max({f.t_next, f.t_check, f.t0}); }
   bool check_flight(Flight& f, double t1, Landing& out);
@@ -1495,17 +1496,19 @@ void LayerSim::wait_flight(int i, long long k_min) {
     return landed ? w <= t1 : w < t1;
   };
   const double q = w / dt_;
-  if (!(q < 1e15)) {  // never (as the scan it replaced, which never found it due)
-    wake_far_.emplace_back(std::numeric_limits<long long>::max(), f.id);
-    return;
+  long long k = k_min;
+  if (!(q <= static_cast<double>(k_min))) {
+    // never (not finite: as the scan it replaced, which never found it due)
+    if (!(q < 1e15)) return wait_far(std::numeric_limits<long long>::max(), f.id);
+    k = static_cast<long long>(q);  // floor(w / dt): k dt <= w < (k + 1) dt but for rounding
+    while (k > k_min && due(k - 1)) --k;
   }
-  // k = floor(w / dt): k dt <= w < (k + 1) dt but for rounding
-  long long k = q > static_cast<double>(k_min) ? static_cast<long long>(q) : k_min;
-  while (k > k_min && due(k - 1)) --k;
   while (!due(k)) ++k;
-  if (k - step_k_ < kWakeRing) wake_ring_[k & (kWakeRing - 1)].push_back(f.id);
-  else wake_far_.emplace_back(k, f.id);
+  if (k - step_k_ >= kWakeRing) return wait_far(k, f.id);
+  wake_ring_[k & (kWakeRing - 1)].push_back(f.id);
 }
+
+void LayerSim::wait_far(long long k, int id) { wake_far_.emplace_back(k, id); }
 
 // ============================================================================
 // Re-entry and foot stability
