@@ -2075,17 +2075,21 @@ double LayerSim::bed_clearance(double r, double theta, double tau) const {
   const double cell = r * l0.delta;
   double best = cell * (col_m_ - 0.5 - rot_slots);
   const int s = outer_slot(t_map_);
-  for (int q = 0; q <= col_m_; ++q) {
+  auto gap = [&](int i) { return (R_eff_ - std::min(n_open_, col_[i] + 2) * d_) - r; };
+  {
+    const double a = cell * std::max(0.0, 0 - 0.5 - rot_slots);
+    if (a >= best) return best;
+    best = std::min(best, std::max(gap(s), a));
+  }
+  // the columns q cells either side (the one against the rotation first)
+  int lo = s, hi = s;
+  for (int q = 1; q <= col_m_; ++q) {
     const double a = cell * std::max(0.0, q - 0.5 - rot_slots);
     if (a >= best) break;
-    for (int sgn : {-1, 1}) {
-      if (q == 0 && sgn > 0) break;
-      int i = s + sgn * q;
-      if (i < 0) i += S0;
-      else if (i >= S0) i -= S0;
-      const double g = (R_eff_ - std::min(n_open_, col_[i] + 2) * d_) - r;
-      best = std::min(best, std::max(g, a));
-    }
+    lo = lo == 0 ? S0 - 1 : lo - 1;
+    hi = hi == S0 - 1 ? 0 : hi + 1;
+    best = std::min(best, std::max(gap(lo), a));
+    best = std::min(best, std::max(gap(hi), a));
   }
   return best;
 }
