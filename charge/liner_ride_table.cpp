@@ -279,17 +279,21 @@ bool first_ride_crossing(const LinerRideTable& t, double rot, const V& p0, const
   }
   bool found = false;
   double best = tb;
+  // ride point at edge b in the fixed frame; the rotation by 0 returns a point
+  // unchanged where its radius is positive and finite (no coordinate is -0 or
+  // infinite)
+  auto placed = [&](int b) {
+    const V q = t.point(b);
+    const double r = t.edge_radius_m[b];
+    return !turned && r > 0 && r < kInf ? q : V(c * q.x() - s * q.y(), s * q.x() + c * q.y());
+  };
+  int b = b0 % t.n_bins;
+  if (b < 0) b += t.n_bins;
+  V q2 = placed(b);
   for (int k = 0; k <= nb; ++k) {
-    int b = (b0 + k) % t.n_bins;
-    if (b < 0) b += t.n_bins;
     const int b1 = b + 1 == t.n_bins ? 0 : b + 1;
-    const V q1l = t.point(b), q2l = t.point(b1);
-    // the rotation by 0 returns a point unchanged where its radius is
-    // positive and finite (no coordinate is -0 or infinite)
-    const double r1 = t.edge_radius_m[b], r2 = t.edge_radius_m[b1];
-    const bool keep = !turned && r1 > 0 && r2 > 0 && r1 < kInf && r2 < kInf;
-    const V q1 = keep ? q1l : V(c * q1l.x() - s * q1l.y(), s * q1l.x() + c * q1l.y());
-    const V q2 = keep ? q2l : V(c * q2l.x() - s * q2l.y(), s * q2l.x() + c * q2l.y());
+    const V q1 = q2;  // edge b: the previous segment's end
+    q2 = placed(b1);
     const V e = q2 - q1;
     const V m(-e.y(), e.x());  // points into the mill (polyline runs anticlockwise)
     // f(t) = (p(t) - q1) . m: > 0 inside, crossing outward where f falls through 0.
@@ -320,6 +324,7 @@ bool first_ride_crossing(const LinerRideTable& t, double rot, const V& p0, const
       bin_hit = b;
       found = true;
     }
+    b = b1;
   }
   if (found) t_hit = best;
   return found;
