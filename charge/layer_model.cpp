@@ -276,9 +276,19 @@ class LayerSim {
   /// Whether the element at (k, s) at tau would roll, and where: the top
   /// cell (kn, sn) of the steepest-descent neighbouring column.
   bool roll_target(int k, int s, double tau, int& kn_out, int& sn_out);
-  /// Whether the top of the column above outer cell s may roll at tau (a
-  /// conservative filter for relax_surface(), from the column map).
-  bool relax_candidate(int s, double tau) const;
+  /// Marks in relax_cur_ the outer cells whose column's top may roll at tau
+  /// (a conservative filter for relax_surface(), from the column map).
+  void relax_candidates(double tau);
+  /// Whether the top of the column above outer cell s, h = col_[s] > 0 high,
+  /// may roll at tau, once the cheap first look of relax_candidates() let it
+  /// through (h_min: the smallest column within relax_reach_, at most n_open).
+  bool relax_candidate_exact(int s, int h, int h_min, double tau) const;
+  /// Bit sets of outer cells (relax_cur_, relax_next_): sets bits lo .. hi;
+  /// the first set bit at or after q (below n), the last at or before q; -1
+  /// if none.
+  static void bits_set(std::vector<std::uint64_t>& b, int lo, int hi);
+  static int bits_next(const std::vector<std::uint64_t>& b, int q, int n);
+  static int bits_prev(const std::vector<std::uint64_t>& b, int q);
   /// Column heights round the outer layer at tau, and with `window` their
   /// window maxima for the flights' clearance (bed_clearance()).
   void update_columns(double tau, bool window);
@@ -410,7 +420,8 @@ class LayerSim {
   std::vector<int> colwin_;                 // max column height over outer slots s-m .. s+m
   std::vector<int> win_pre_, win_suf_, win_val_;  // scratch of the window maxima
   std::vector<int> active_;                 // scratch: outer slots whose column is still growing
-  std::vector<char> relax_cur_, relax_next_;  // scratch of relax_surface(): columns to visit
+  std::vector<std::uint64_t> relax_cur_, relax_next_;  // scratch of relax_surface(): columns to visit (bits)
+  std::vector<double> relax_tol_, relax_past_sn_, relax_ovh_sn_;  // [layer] the first look's bounds (relax_candidates())
   // incremental maps (docs/models/layer.md §Incremental maps)
   std::vector<SlotMap> colmap_;             // [j] outer layer -> layer j
   std::vector<SlotMap> supmap_;             // [j] layer j -> layer j - 1
@@ -1623,31 +1634,43 @@ void LayerSim::relax_surface(double tau) {
   // relax_reach_ outer cells) for the rest of this pass and the next. Since a
   // column whose surroundings did not change cannot start to roll, this
   // visits every column the full sweep would move, in the same order.
+  //
+  // The columns to visit are bit sets (one bit per outer cell), so that a
+  // pass finds its next marked column a word at a time and a mark sets a
+  // range: a pass visits a few dozen of the hundreds of columns.
   const Layer& l0 = L_[0];
   const int S0 = l0.S;
-  relax_cur_.assign(S0, 0);
-  relax_next_.assign(S0, 0);
+  const int nw = (S0 + 63) / 64;
+  relax_cur_.assign(nw, 0);
+  relax_next_.assign(nw, 0);
   window_extreme(col_, relax_reach_, false, colmin_);
-  for (int s = 0; s < S0; ++s) relax_cur_[s] = !incremental_ || relax_candidate(s, tau);
+  if (incremental_) relax_candidates(tau);
+  else bits_set(relax_cur_, 0, S0 - 1);
   auto mark = [&](int c) {
     if (2 * relax_reach_ + 1 >= S0) {  // the reach covers the ring
-      std::fill(relax_cur_.begin(), relax_cur_.end(), 1);
-      std::fill(relax_next_.begin(), relax_next_.end(), 1);
+      bits_set(relax_cur_, 0, S0 - 1);
+      bits_set(relax_next_, 0, S0 - 1);
       return;
     }
-    for (int o = -relax_reach_; o <= relax_reach_; ++o) {
-      int i = c + o;
-      if (i < 0) i += S0;
-      else if (i >= S0) i -= S0;
-      relax_cur_[i] = 1;
-      relax_next_[i] = 1;
+    // c - reach .. c + reach, circularly (shorter than the ring)
+    const int lo = c - relax_reach_, hi = c + relax_reach_;
+    if (lo < 0) {
+      bits_set(relax_cur_, lo + S0, S0 - 1);
+      bits_set(relax_next_, lo + S0, S0 - 1);
+    } else if (hi >= S0) {
+      bits_set(relax_cur_, 0, hi - S0);
+      bits_set(relax_next_, 0, hi - S0);
     }
+    bits_set(relax_cur_, std::max(lo, 0), std::min(hi, S0 - 1));
+    bits_set(relax_next_, std::max(lo, 0), std::min(hi, S0 - 1));
   };
   for (int pass = 0; pass < 6; ++pass) {
     int moved = 0;
-    for (int q = 0; q < S0; ++q) {
-      const int s0 = pass % 2 == 0 ? q : S0 - 1 - q;
-      if (!relax_cur_[s0]) continue;
+    const bool up = pass % 2 == 0;
+    // the next marked column at or after (up) / before (down) q, as the
+    // marks stand now (a move marks columns still to come in this pass)
+    for (int s0 = up ? bits_next(relax_cur_, 0, S0) : bits_prev(relax_cur_, S0 - 1); s0 >= 0;
+         s0 = up ? bits_next(relax_cur_, s0 + 1, S0) : bits_prev(relax_cur_, s0 - 1)) {
       const double th = slot_angle(0, s0, tau);
       for (int top = 0; top < 32; ++top) {
         const int h = ncol(th, tau);
@@ -1673,39 +1696,116 @@ void LayerSim::relax_surface(double tau) {
     if (moved == 0) break;
     std::swap(relax_cur_, relax_next_);
     std::fill(relax_next_.begin(), relax_next_.end(), 0);
-    if (!incremental_) std::fill(relax_cur_.begin(), relax_cur_.end(), 1);
+    if (!incremental_) bits_set(relax_cur_, 0, S0 - 1);
   }
 }
 
-bool LayerSim::relax_candidate(int s, double tau) const {
+void LayerSim::bits_set(std::vector<std::uint64_t>& b, int lo, int hi) {
+  // bits lo .. hi (lo <= hi)
+  const int w0 = lo >> 6, w1 = hi >> 6;
+  const std::uint64_t m0 = ~std::uint64_t{0} << (lo & 63);
+  const std::uint64_t m1 = ~std::uint64_t{0} >> (63 - (hi & 63));
+  if (w0 == w1) {
+    b[w0] |= m0 & m1;
+    return;
+  }
+  b[w0] |= m0;
+  for (int w = w0 + 1; w < w1; ++w) b[w] = ~std::uint64_t{0};
+  b[w1] |= m1;
+}
+
+int LayerSim::bits_next(const std::vector<std::uint64_t>& b, int q, int n) {
+  // the first set bit at or after q (bits at n and beyond are never set), -1 if none
+  if (q >= n) return -1;
+  int w = q >> 6;
+  std::uint64_t x = b[w] & (~std::uint64_t{0} << (q & 63));
+  const int nw = static_cast<int>(b.size());
+  while (!x) {
+    if (++w >= nw) return -1;
+    x = b[w];
+  }
+  return (w << 6) + __builtin_ctzll(x);
+}
+
+int LayerSim::bits_prev(const std::vector<std::uint64_t>& b, int q) {
+  // the last set bit at or before q, -1 if none
+  if (q < 0) return -1;
+  int w = q >> 6;
+  std::uint64_t x = b[w] & (~std::uint64_t{0} >> (63 - (q & 63)));
+  while (!x) {
+    if (--w < 0) return -1;
+    x = b[w];
+  }
+  return (w << 6) + 63 - __builtin_clzll(x);
+}
+
+void LayerSim::relax_candidates(double tau) {
+  // relax_candidate() for every outer cell into relax_cur_, with its cheap
+  // first look evaluated here from per-layer constants and the outer layer's
+  // direction at tau (the same products as slot_dir(), so the same values)
+  const int n = n_open_;
+  if (static_cast<int>(relax_tol_.size()) != n) {
+    relax_tol_.resize(n);
+    relax_past_sn_.resize(n);
+    relax_ovh_sn_.resize(n);
+    for (int k = 0; k < n; ++k) {
+      const double tol = L_[k].delta + L_[0].delta;
+      relax_tol_[k] = tol;
+      relax_past_sn_[k] = sin_fa_[k] - tol;
+      relax_ovh_sn_[k] = 0.3 - tol;
+    }
+  }
+  const Layer& l0 = L_[0];
+  const int S0 = l0.S;
+  double c0, s0;
+  slot_dir(0, 0, tau, c0, s0);  // refreshes the cached direction of layer 0 at tau
+  const double dc = dir_c_[0], ds = dir_s_[0];
+  const double* cs = &slot_cos_[l0.offset];
+  const double* ss = &slot_sin_[l0.offset];
+  const int* col = col_.data();
+  const int* cmin = colmin_.data();
+  std::uint64_t* bits = relax_cur_.data();
+  for (int s = 0; s < S0; ++s) {
+    const int h = col[s];
+    if (h == 0) continue;
+    const int k = h - 1;
+    const int h_min = std::min(n, cmin[s]);
+    const bool unheld = !L_[k].held;
+    // the first look of relax_candidate(), from the direction of the column's centre
+    const double c = dc * cs[s] - ds * ss[s];
+    const double sn = ds * cs[s] + dc * ss[s];
+    const double tol = relax_tol_[k];
+    const bool past = c > -tol && sn > relax_past_sn_[k];
+    const bool overhang = k > 0 && unheld && (h_min < h || (sn > relax_ovh_sn_[k] && h < n));
+    const bool repose = unheld && c < tol && h_min < n;
+    if (!past && !overhang && !repose) continue;
+    if (relax_candidate_exact(s, h, h_min, tau)) bits[s >> 6] |= std::uint64_t{1} << (s & 63);
+  }
+}
+
+bool LayerSim::relax_candidate_exact(int s, int h, int h_min, double tau) const {
   // Whether the top of the column above outer cell s may roll, from the
   // fresh column map at tau. Conservative: false only where roll_target()
-  // must return false for that top.
-  const int h = col_[s];  // = ncol() at the centre of cell s: the map is fresh
-  if (h == 0) return false;
-  const int k = h - 1;
+  // must return false for that top. h = col_[s] > 0 (= ncol() at the centre
+  // of cell s: the map is fresh); the cheap first look (relax_candidates())
+  // has let it through.
+  //
   // Bounds used below: at any angle within relax_reach_ outer cells of s the
   // top found by ncol() is at least the smallest column height h_min there
   // (every cell of layer j < h_min is occupied at the outer-cell centres, and
   // each cell of layer j contains one of them), so a cell an element could
   // roll into lies between the radii of layers h_min and n_open - 1.
-  const int h_min = std::min(n_open_, colmin_[s]);  // over s +- relax_reach_
-  // a held top moves only by the past rule; an unheld one also by repose
-  // and (above the outer layer) over an overhang, as in roll_target()
+  // h_min = min(n_open, colmin_[s]), over s +- relax_reach_.
+  //
+  // The first look, from the direction of the column's centre (cheap): the
+  // top's slot is within half its cell plus half an outer cell of it, so it
+  // allows that much angle (sin and cos change no faster); past: c > -tol and
+  // sn > sin_fa - tol; an overhang (see below): k > 0, unheld and (h_min < h
+  // or sn > 0.3 - tol and h < n_open); repose: unheld, c < tol and h_min <
+  // n_open. A held top moves only by the past rule; an unheld one also by
+  // repose and (above the outer layer) over an overhang, as in roll_target().
+  const int k = h - 1;
   const bool unheld = !L_[k].held;
-  // A first look from the direction of the column's centre (cheap): the
-  // top's slot is within half its cell plus half an outer cell of it, so
-  // allow that much angle (sin and cos change no faster).
-  {
-    double c, sn;
-    slot_dir(0, s, tau, c, sn);
-    const double tol = L_[k].delta + L_[0].delta;
-    const bool past = c > -tol && sn > sin_fa_[k] - tol;
-    // an overhang: see below
-    const bool overhang = k > 0 && unheld && (h_min < h || (sn > 0.3 - tol && h < n_open_));
-    const bool repose = unheld && c < tol && h_min < n_open_;
-    if (!past && !overhang && !repose) return false;
-  }
   // the top itself: the cell ncol() and slot_of() find at the column's
   // centre, as relax_surface() takes it; the past and overhang tests below
   // are roll_target()'s own, evaluated exactly as there
