@@ -1497,14 +1497,24 @@ bool LayerSim::toe_ward_room(double& theta, double tau, bool holdable, int& k_ou
   const double step = l0.delta;
   int s0 = static_cast<int>(wrap2pi(theta - (l0.phase + l0.omega * (t_map_ - t_step0_)) + 0.5 * l0.delta) * l0.inv_delta);
   if (s0 >= S0) s0 -= S0;
+  const int* col = col_.data();
+  const int n_open = n_open_;
   int i = 0;
   while (i < 2 * S0) {
-    // the next column the map shows with room
+    // the next column the map shows with room, n >= 1 steps back (at most
+    // 2 S0 - i): runs down to cell 0 without a wrap test per cell
+    const int lim = 2 * S0 - i;
     int n = 0;
-    do {
-      ++n;
-      if (--s0 < 0) s0 += S0;
-    } while (col_[s0] >= n_open_ && i + n < 2 * S0);
+    for (;;) {
+      if (s0 == 0) s0 = S0;  // the next step wraps
+      const int stop = std::max(0, s0 - (lim - n));  // the lowest cell this run may reach
+      int p = s0 - 1;
+      while (p - 4 >= stop && std::min(std::min(col[p], col[p - 1]), std::min(col[p - 2], col[p - 3])) >= n_open) p -= 4;
+      while (p > stop && col[p] >= n_open) --p;
+      n += s0 - p;
+      s0 = p;
+      if (col[p] < n_open || n >= lim) break;
+    }
     i += n;
     theta -= n * step;
     if (col_[s0] >= n_open_) break;
