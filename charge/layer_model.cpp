@@ -1775,19 +1775,29 @@ void LayerSim::relax_candidates(double tau) {
   const int* col = col_.data();
   const int* cmin = colmin_.data();
   std::uint64_t* bits = relax_cur_.data();
+  // inside the charge (every column within reach full: h = h_min = n_open)
+  // only the past rule can let a top through
+  const double tol_full = relax_tol_[n - 1], past_sn_full = relax_past_sn_[n - 1];
   for (int s = 0; s < S0; ++s) {
     const int h = col[s];
     if (h == 0) continue;
-    const int k = h - 1;
-    const int h_min = std::min(n, cmin[s]);
-    const bool unheld = !L_[k].held;
     // the first look of relax_candidate(), from the direction of the column's centre
     const double c = dc * cs[s] - ds * ss[s];
+    if (cmin[s] >= n) {
+      if (!(c > -tol_full)) continue;
+      const double sn = ds * cs[s] + dc * ss[s];
+      if (!(sn > past_sn_full)) continue;
+      if (relax_candidate_exact(s, h, n, tau)) bits[s >> 6] |= std::uint64_t{1} << (s & 63);
+      continue;
+    }
+    const int k = h - 1;
+    const int h_min = cmin[s];  // < n
+    const bool unheld = !L_[k].held;
     const double sn = ds * cs[s] + dc * ss[s];
     const double tol = relax_tol_[k];
     const bool past = c > -tol && sn > relax_past_sn_[k];
     const bool overhang = k > 0 && unheld && (h_min < h || (sn > relax_ovh_sn_[k] && h < n));
-    const bool repose = unheld && c < tol && h_min < n;
+    const bool repose = unheld && c < tol;  // h_min < n
     if (!past && !overhang && !repose) continue;
     if (relax_candidate_exact(s, h, h_min, tau)) bits[s >> 6] |= std::uint64_t{1} << (s & 63);
   }
