@@ -1682,14 +1682,17 @@ void LayerSim::relax_surface(double tau) {
     for (int s0 = up ? bits_next(relax_cur_, 0, S0) : bits_prev(relax_cur_, S0 - 1); s0 >= 0;
          s0 = up ? bits_next(relax_cur_, s0 + 1, S0) : bits_prev(relax_cur_, s0 - 1)) {
       const double th = slot_angle(0, s0, tau);
+      bool stable = false;
       for (int top = 0; top < 32; ++top) {
         const int h = ncol(th, tau);
+        stable = true;
         if (h == 0) break;
         int k = h - 1, s = slot_of(k, th, tau);
         const int id = occ(k, s);
         if (id < 0) break;
         int kn, sn;
         if (!roll_target(k, s, tau, kn, sn)) break;
+        stable = false;
         ++moved;
         // the mill lifted it to here since it entered; it settles lower
         double c0, s0y;
@@ -1702,6 +1705,10 @@ void LayerSim::relax_surface(double tau) {
         mark(slot_of(0, slot_angle(kn, sn, tau), tau));
         if (elem_layer_[id] >= 0) mark(slot_of(0, slot_angle(elem_layer_[id], elem_slot_[id], tau), tau));
       }
+      // The column is stable as things stand: the next pass need not look at
+      // it again unless a later move within reach marks it anew (a visit
+      // then finds what this one found).
+      if (stable) relax_next_[s0 >> 6] &= ~(std::uint64_t{1} << (s0 & 63));
     }
     if (moved == 0) break;
     std::swap(relax_cur_, relax_next_);
