@@ -276,6 +276,38 @@ class LayerSim {
   /// Whether the element at (k, s) at tau would roll, and where: the top
   /// cell (kn, sn) of the steepest-descent neighbouring column.
   bool roll_target(int k, int s, double tau, int& kn_out, int& sn_out);
+  /// ncol(theta, tau), which also hands back the slots it found on the way:
+  /// at = slot_of(h, theta, tau) if h < n_open, below = slot_of(h - 1, theta,
+  /// tau) if h > 0 (the same values; the foot-stability rules need them).
+  int ncol_at(double theta, double tau, int& below, int& at) const {
+    // ncol()'s walks, in the same order over the same cells
+    const Layer& l0 = L_[0];
+    const double ph = l0.phase + l0.omega * (t_map_ - t_step0_);
+    int s0 = static_cast<int>(wrap2pi(theta - ph + 0.5 * l0.delta) * l0.inv_delta);
+    if (s0 >= l0.S) s0 -= l0.S;
+    int h = std::min(col_[s0], n_open_);
+    below = at = -1;
+    while (h < n_open_) {
+      const int q = slot_of(h, theta, tau);
+      if (occ(h, q) < 0) {
+        at = q;
+        break;
+      }
+      below = q;
+      ++h;
+    }
+    while (h > 0) {
+      const int q = below >= 0 ? below : slot_of(h - 1, theta, tau);
+      if (occ(h - 1, q) >= 0) {
+        below = q;
+        break;
+      }
+      at = q;
+      below = -1;
+      --h;
+    }
+    return h;
+  }
   /// Marks in relax_cur_ the outer cells whose column's top may roll at tau
   /// (a conservative filter for relax_surface(), from the column map).
   void relax_candidates(double tau);
@@ -1592,11 +1624,11 @@ bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out) {
     if (past && dir > 0) continue;  // past the flight angle: only down the rising side
     const double thn = th + dir * L_[k].delta;
     occ(k, s) = -1;  // the neighbouring column without this element
-    const int kn = ncol(thn, tau);
+    int sb, sn;  // sn = slot_of(kn, thn, tau) where kn < n_open
+    const int kn = ncol_at(thn, tau, sb, sn);
     occ(k, s) = id;
     if (kn >= n_open_) continue;
     if (kn == 0 && k == 0 && !past) continue;  // on the liner the lifters hold it
-    const int sn = slot_of(kn, thn, tau);
     if (kn == k && sn == s) continue;
     double cn, snn;
     slot_dir(kn, sn, tau, cn, snn);
@@ -1615,9 +1647,9 @@ bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out) {
     const V q(x, y - d_);
     const double rq = q.norm(), thq = fast_atan2(q.y(), q.x());
     if (!inside_charge(q, rq, thq, tau)) {
-      const int kq = ncol(thq, tau);
+      int sqb, sq;  // sq = slot_of(kq, thq, tau) where kq < n_open
+      const int kq = ncol_at(thq, tau, sqb, sq);
       if (kq < n_open_) {
-        const int sq = slot_of(kq, thq, tau);
         double cq, sq_th;
         slot_dir(kq, sq, tau, cq, sq_th);
         const double yq = L_[kq].r * sq_th;
@@ -1684,10 +1716,11 @@ void LayerSim::relax_surface(double tau) {
       const double th = slot_angle(0, s0, tau);
       bool stable = false;
       for (int top = 0; top < 32; ++top) {
-        const int h = ncol(th, tau);
+        int s, s_free;  // s = slot_of(h - 1, th, tau) where h > 0
+        const int h = ncol_at(th, tau, s, s_free);
         stable = true;
         if (h == 0) break;
-        int k = h - 1, s = slot_of(k, th, tau);
+        const int k = h - 1;
         const int id = occ(k, s);
         if (id < 0) break;
         int kn, sn;
@@ -2048,6 +2081,23 @@ void LayerSim::update_columns(double tau, bool window) {
   t_win_ = tau;
 }
 
+/// window_extreme()'s blocks: out[s] = op-extreme of val[s .. s + w - 1]
+/// (val: the ring unrolled, n = S + w - 1 values), from the prefix and
+/// suffix extremes of blocks of w.
+template <class Op>
+void window_blocks(const int* val, int n, int w, int S, int* pre, int* suf, int* out, Op op) {
+  for (int p0 = 0; p0 < n; p0 += w) {  // blocks [p0, p0 + w)
+    const int p1 = std::min(n, p0 + w);
+    int mx = val[p0];
+    pre[p0] = mx;
+    for (int p = p0 + 1; p < p1; ++p) pre[p] = mx = op(mx, val[p]);
+    mx = val[p1 - 1];
+    suf[p1 - 1] = mx;
+    for (int p = p1 - 2; p >= p0; --p) suf[p] = mx = op(mx, val[p]);
+  }
+  for (int s = 0; s < S; ++s) out[s] = op(suf[s], pre[s + w - 1]);  // window [s, s + w - 1] unrolled
+}
+
 void LayerSim::window_extreme(const std::vector<int>& v, int m, bool max, std::vector<int>& out) {
   // Extreme of v over s-m .. s+m (circular) for every s, by the van Herk /
   // Gil-Werman block method: O(S) whatever m.
@@ -2059,33 +2109,14 @@ void LayerSim::window_extreme(const std::vector<int>& v, int m, bool max, std::v
   win_suf_.resize(n);
   win_val_.resize(n);
   out.resize(S);
-  // the minimum is minus the maximum of -v
   int* val = win_val_.data();
-  int* pre = win_pre_.data();
-  int* suf = win_suf_.data();
-  if (max) {
-    std::copy(v.end() - m, v.end(), val);
-    std::copy(v.begin(), v.end(), val + m);
-    std::copy(v.begin(), v.begin() + m, val + m + S);
-  } else {
-    std::transform(v.end() - m, v.end(), val, std::negate<int>());
-    std::transform(v.begin(), v.end(), val + m, std::negate<int>());
-    std::transform(v.begin(), v.begin() + m, val + m + S, std::negate<int>());
-  }
-  for (int p0 = 0; p0 < n; p0 += w) {  // blocks [p0, p0 + w)
-    const int p1 = std::min(n, p0 + w);
-    int mx = val[p0];
-    pre[p0] = mx;
-    for (int p = p0 + 1; p < p1; ++p) pre[p] = mx = std::max(mx, val[p]);
-    mx = val[p1 - 1];
-    suf[p1 - 1] = mx;
-    for (int p = p1 - 2; p >= p0; --p) suf[p] = mx = std::max(mx, val[p]);
-  }
-  int* o = out.data();
+  std::copy(v.end() - m, v.end(), val);
+  std::copy(v.begin(), v.end(), val + m);
+  std::copy(v.begin(), v.begin() + m, val + m + S);
   if (max)
-    for (int s = 0; s < S; ++s) o[s] = std::max(suf[s], pre[s + w - 1]);  // window [s, s + w - 1] unrolled
+    window_blocks(val, n, w, S, win_pre_.data(), win_suf_.data(), out.data(), [](int a, int b) { return std::max(a, b); });
   else
-    for (int s = 0; s < S; ++s) o[s] = -std::max(suf[s], pre[s + w - 1]);
+    window_blocks(val, n, w, S, win_pre_.data(), win_suf_.data(), out.data(), [](int a, int b) { return std::min(a, b); });
 }
 
 double LayerSim::bed_clearance(double r, double theta, double tau) const {
