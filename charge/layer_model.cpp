@@ -1816,14 +1816,31 @@ void LayerSim::relax_candidates(double tau) {
   const int* cmin = colmin_.data();
   std::uint64_t* bits = relax_cur_.data();
   // inside the charge (every column within reach full: h = h_min = n_open)
-  // only the past rule can let a top through
+  // only the past rule can let a top through, where sin > past_sn_full: in
+  // the arc of angles asin(past_sn_full) .. pi - asin(past_sn_full). Columns
+  // outside it widened by one outer cell each side (far beyond the rounding
+  // of the directions) are passed over without their direction: the arc's
+  // outer cells are arc_start .. arc_start + arc_len - 1 (circularly).
   const double tol_full = relax_tol_[n - 1], past_sn_full = relax_past_sn_[n - 1];
+  int arc_start = 0, arc_len = S0;
+  if (past_sn_full >= 1.0 + 1e-9) {
+    arc_len = 0;  // never past (the layer never lets go)
+  } else if (past_sn_full > -0.9) {
+    const double as = std::asin(std::min(past_sn_full, 1.0));
+    const double ph = l0.phase + l0.omega * (tau - t_step0_);
+    arc_start = static_cast<int>(wrap2pi(as - l0.delta - ph) * l0.inv_delta);
+    if (arc_start >= S0) arc_start -= S0;
+    arc_len = std::min(S0, static_cast<int>(std::ceil((kPi - 2.0 * as + 2.0 * l0.delta) * l0.inv_delta)) + 2);
+  }
   for (int s = 0; s < S0; ++s) {
     const int h = col[s];
     if (h == 0) continue;
-    // the first look of relax_candidate(), from the direction of the column's centre
-    const double c = dc * cs[s] - ds * ss[s];
     if (cmin[s] >= n) {
+      int u = s - arc_start;
+      if (u < 0) u += S0;
+      if (u >= arc_len) continue;
+      // the first look of relax_candidate(), from the direction of the column's centre
+      const double c = dc * cs[s] - ds * ss[s];
       if (!(c > -tol_full)) continue;
       const double sn = ds * cs[s] + dc * ss[s];
       if (!(sn > past_sn_full)) continue;
@@ -1833,6 +1850,7 @@ void LayerSim::relax_candidates(double tau) {
     const int k = h - 1;
     const int h_min = cmin[s];  // < n
     const bool unheld = !L_[k].held;
+    const double c = dc * cs[s] - ds * ss[s];
     const double sn = ds * cs[s] + dc * ss[s];
     const double tol = relax_tol_[k];
     const bool past = c > -tol && sn > relax_past_sn_[k];
