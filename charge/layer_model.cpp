@@ -1894,6 +1894,27 @@ bool LayerSim::relax_candidate_exact(int s, int h, int h_min, double tau) const 
   if (ct > 0 && stp > sin_fa_[k]) return true;  // past the flight angle
   if (!unheld) return false;
   const double x = L_[k].r * ct, y = L_[k].r * stp;
+  // The repose bound first (cheaper than the overhang's look at the cell
+  // below; the answer is the same either way round).
+  if (ct < 0 && h_min < n_open_) {
+    // the toe side, repose: the lowest and nearest a neighbouring free cell
+    // can be against the angle-of-repose line through the top (with full
+    // columns all round there is nowhere to roll)
+    const double r_out = L_[h_min].r, r_in = L_[n_open_ - 1].r;
+    // The neighbouring directions are the top's turned by -+ delta_k; the
+    // centre of the cell roll_target() finds there is up to half that cell's
+    // angle further, at most sl along the arc (the innermost open layer has
+    // the widest cells). A little slack for the rounding of the rotation.
+    const double sl = 0.5 * r_out * L_[n_open_ - 1].delta;
+    const double cd = cos_delta_[k], sd = sin_delta_[k];
+    for (double dir : {-1.0, 1.0}) {
+      const double cn = ct * cd - dir * stp * sd, snn = stp * cd + dir * ct * sd;
+      const double y_low = std::min(r_out * snn, r_in * snn) - sl;
+      const double x_a = std::min(r_out * cn, r_in * cn) - sl, x_b = std::max(r_out * cn, r_in * cn) + sl;
+      const double run_min = x < x_a ? x_a - x : (x > x_b ? x - x_b : 0.0);
+      if (y_low < y + 1e-9 && y - y_low > tan_g_ * run_min - 1e-9) return true;
+    }
+  }
   // an overhang. While sin(theta) <= 0.3 the point one diameter below the
   // top lies in the top's ring or outside it, where every column within
   // reach at least as tall as this one fills it; above that it may reach
@@ -1903,24 +1924,6 @@ bool LayerSim::relax_candidate_exact(int s, int h, int h_min, double tau) const 
   if (k > 0 && (h_min < h || (stp > 0.3 && h < n_open_))) {
     const V q(x, y - d_);
     if (!inside_charge(q, q.norm(), tau)) return true;
-  }
-  if (ct >= 0) return false;  // the rising side: no repose rule
-  // the toe side, repose: the lowest and nearest a neighbouring free cell
-  // can be against the angle-of-repose line through the top
-  if (h_min >= n_open_) return false;  // full columns all round: nowhere to roll
-  const double r_out = L_[h_min].r, r_in = L_[n_open_ - 1].r;
-  // The neighbouring directions are the top's turned by -+ delta_k; the
-  // centre of the cell roll_target() finds there is up to half that cell's
-  // angle further, at most sl along the arc (the innermost open layer has
-  // the widest cells). A little slack for the rounding of the rotation.
-  const double sl = 0.5 * r_out * L_[n_open_ - 1].delta;
-  const double cd = cos_delta_[k], sd = sin_delta_[k];
-  for (double dir : {-1.0, 1.0}) {
-    const double cn = ct * cd - dir * stp * sd, snn = stp * cd + dir * ct * sd;
-    const double y_low = std::min(r_out * snn, r_in * snn) - sl;
-    const double x_a = std::min(r_out * cn, r_in * cn) - sl, x_b = std::max(r_out * cn, r_in * cn) + sl;
-    const double run_min = x < x_a ? x_a - x : (x > x_b ? x - x_b : 0.0);
-    if (y_low < y + 1e-9 && y - y_low > tan_g_ * run_min - 1e-9) return true;
   }
   return false;
 }
