@@ -450,7 +450,8 @@ class LayerSim {
   bool ring_is_layer_ = false;              // occupancy rings coincide with the layers, bins with slots
   std::vector<int> col_;                    // column height above each outer slot, at t_map_
   std::vector<int> colwin_;                 // max column height over outer slots s-m .. s+m
-  std::vector<int> win_pre_, win_suf_, win_val_;  // scratch of the window maxima
+  std::vector<int> win_pre_, win_val_;      // scratch of the window extremes
+  std::vector<std::int16_t> win16_val_, win16_tmp_;  // the same, for values that fit 16 bits
   std::vector<int> active_;                 // scratch: outer slots whose column is still growing
   std::vector<std::uint64_t> relax_cur_, relax_next_;  // scratch of relax_surface(): columns to visit (bits)
   std::vector<double> relax_tol_, relax_past_sn_, relax_ovh_sn_;  // [layer] the first look's bounds (relax_candidates())
@@ -2102,42 +2103,61 @@ void LayerSim::update_columns(double tau, bool window) {
   t_win_ = tau;
 }
 
-/// window_extreme()'s blocks: out[s] = op-extreme of val[s .. s + w - 1]
-/// (val: the ring unrolled, n = S + w - 1 values), from the prefix and
-/// suffix extremes of blocks of w.
-template <class Op>
-void window_blocks(const int* val, int n, int w, int S, int* pre, int* suf, int* out, Op op) {
-  for (int p0 = 0; p0 < n; p0 += w) {  // blocks [p0, p0 + w)
-    const int p1 = std::min(n, p0 + w);
-    int mx = val[p0];
-    pre[p0] = mx;
-    for (int p = p0 + 1; p < p1; ++p) pre[p] = mx = op(mx, val[p]);
-    mx = val[p1 - 1];
-    suf[p1 - 1] = mx;
-    for (int p = p1 - 2; p >= p0; --p) suf[p] = mx = op(mx, val[p]);
+/// window_extreme()'s extremes: out[s] = op-extreme of val[s .. s + w - 1]
+/// (val: the ring unrolled, n = S + w - 1 values). By doubling: after each
+/// level, val[p] holds the extreme over a span twice as long (each level a
+/// loop without a carried dependence); the window is then the union of two
+/// spans L <= w < 2 L long, one at each end. Overwrites val and tmp.
+template <class T, class Op>
+void window_spans(T* val, T* tmp, int n, int w, int S, int* out, Op op) {
+  int L = 1, len = n;  // val[p], p < len, is the extreme over p .. p + L - 1
+  while (2 * L <= w) {
+    len -= L;
+    for (int p = 0; p < len; ++p) tmp[p] = op(val[p], val[p + L]);
+    std::swap(val, tmp);
+    L *= 2;
   }
-  for (int s = 0; s < S; ++s) out[s] = op(suf[s], pre[s + w - 1]);  // window [s, s + w - 1] unrolled
+  for (int s = 0; s < S; ++s) out[s] = op(val[s], val[s + w - L]);
 }
 
 void LayerSim::window_extreme(const std::vector<int>& v, int m, bool max, std::vector<int>& out) {
-  // Extreme of v over s-m .. s+m (circular) for every s, by the van Herk /
-  // Gil-Werman block method: O(S) whatever m.
+  // Extreme of v over s-m .. s+m (circular) for every s, by doubling spans
+  // (window_spans(); O(S log m), loops the compiler vectorises). Column
+  // heights fit 16 bits, which the vector instructions take 8 at a time.
   const int S = static_cast<int>(v.size());
   m = std::min(m, (S - 1) / 2);
   const int w = 2 * m + 1;
   const int n = S + 2 * m;  // unrolled: position p holds slot (p - m) mod S
-  win_pre_.resize(n);
-  win_suf_.resize(n);
-  win_val_.resize(n);
   out.resize(S);
+  win16_val_.resize(n);
+  win16_tmp_.resize(n);
+  std::int16_t* val16 = win16_val_.data();
+  const int* vp = v.data();
+  unsigned wide = 0;  // nonzero if a value does not fit 16 bits
+  for (int i = 0; i < S; ++i) {
+    val16[m + i] = static_cast<std::int16_t>(vp[i]);
+    wide |= (static_cast<unsigned>(vp[i]) + 32768u) >> 16;
+  }
+  if (wide == 0) {
+    std::int16_t* val = val16;
+    std::copy(val + S, val + S + m, val);          // slots S - m .. S - 1
+    std::copy(val + m, val + 2 * m, val + m + S);  // slots 0 .. m - 1
+    if (max)
+      window_spans(val, win16_tmp_.data(), n, w, S, out.data(), [](std::int16_t a, std::int16_t b) { return std::max(a, b); });
+    else
+      window_spans(val, win16_tmp_.data(), n, w, S, out.data(), [](std::int16_t a, std::int16_t b) { return std::min(a, b); });
+    return;
+  }
+  win_pre_.resize(n);
+  win_val_.resize(n);
   int* val = win_val_.data();
   std::copy(v.end() - m, v.end(), val);
   std::copy(v.begin(), v.end(), val + m);
   std::copy(v.begin(), v.begin() + m, val + m + S);
   if (max)
-    window_blocks(val, n, w, S, win_pre_.data(), win_suf_.data(), out.data(), [](int a, int b) { return std::max(a, b); });
+    window_spans(val, win_pre_.data(), n, w, S, out.data(), [](int a, int b) { return std::max(a, b); });
   else
-    window_blocks(val, n, w, S, win_pre_.data(), win_suf_.data(), out.data(), [](int a, int b) { return std::min(a, b); });
+    window_spans(val, win_pre_.data(), n, w, S, out.data(), [](int a, int b) { return std::min(a, b); });
 }
 
 double LayerSim::bed_clearance(double r, double theta, double tau) const {
