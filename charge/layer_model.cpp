@@ -1671,7 +1671,7 @@ void LayerSim::relax_surface(double tau) {
   // must), then the next one, until the column is stable.
   //
   // Only columns whose top could roll are visited: the first pass takes the
-  // candidates of the fresh column map (relax_candidate(), a conservative
+  // candidates of the fresh column map (relax_candidates(), a conservative
   // test), and a move marks the columns within reach of its source and its
   // destination (the neighbours roll_target() looks at lie within
   // relax_reach_ outer cells) for the rest of this pass and the next. Since a
@@ -1791,9 +1791,10 @@ int LayerSim::bits_prev(const std::vector<std::uint64_t>& b, int q) {
 }
 
 void LayerSim::relax_candidates(double tau) {
-  // relax_candidate() for every outer cell into relax_cur_, with its cheap
-  // first look evaluated here from per-layer constants and the outer layer's
-  // direction at tau (the same products as slot_dir(), so the same values)
+  // The candidate test for every outer cell into relax_cur_: its cheap first
+  // look (described at relax_candidate_exact()) evaluated here from
+  // per-layer constants and the outer layer's direction at tau (the same
+  // products as slot_dir(), so the same values), then the exact rest.
   const int n = n_open_;
   if (static_cast<int>(relax_tol_.size()) != n) {
     relax_tol_.resize(n);
@@ -1840,7 +1841,7 @@ void LayerSim::relax_candidates(double tau) {
       int u = s - arc_start;
       if (u < 0) u += S0;
       if (u >= arc_len) continue;
-      // the first look of relax_candidate(), from the direction of the column's centre
+      // the first look, from the direction of the column's centre
       const double c = dc * cs[s] - ds * ss[s];
       if (!(c > -tol_full)) continue;
       const double sn = ds * cs[s] + dc * ss[s];
