@@ -31,30 +31,63 @@ inline double fast_atan2(double y, double x) {
   return y < 0 ? -r : r;
 }
 
+/// The capsule of radius a round segment AB, with the terms of
+/// capsule_entry() that do not depend on the ray.
+struct Capsule {
+  double ax, ay, bx, by;  // A, B
+  double abx, aby, l2;    // B - A, |B - A|^2
+  double nx, ny, an;      // unit normal of AB, A . n
+  double a2n, b2n, aa;    // |A|^2, |B|^2, a^2
+  double a;
+  Capsule(const V& A, const V& B, double a_) : ax(A.x()), ay(A.y()), bx(B.x()), by(B.y()), a(a_) {
+    abx = bx - ax;
+    aby = by - ay;
+    l2 = abx * abx + aby * aby;
+    nx = ny = an = 0;
+    if (l2 > 0) {
+      const double sl = std::sqrt(l2);
+      nx = -aby / sl;
+      ny = abx / sl;
+      an = ax * nx + ay * ny;
+    }
+    a2n = ax * ax + ay * ay;
+    b2n = bx * bx + by * by;
+    aa = a * a;
+  }
+};
+
 /// Radius at which the ray r u (r >= 0) first enters the capsule of radius a
 /// round segment AB; +inf if it does not. The origin must lie outside.
-inline __attribute__((always_inline)) double ray_capsule_entry(const V& u, const V& A, const V& B, double a) {
+/// (Scalar, each term in the order of the vector form it replaced, so the
+/// table is the same to the bit.)
+inline __attribute__((always_inline)) double capsule_entry(double ux, double uy, const Capsule& c) {
   double best = std::numeric_limits<double>::infinity();
-  const V ab = B - A;
-  const double l2 = ab.squaredNorm();
-  if (l2 > 0) {
-    const V n = V(-ab.y(), ab.x()) / std::sqrt(l2);
-    const double un = u.dot(n);
+  if (c.l2 > 0) {
+    const double un = ux * c.nx + uy * c.ny;
     if (std::abs(un) > 1e-14) {
       for (double side : {-1.0, 1.0}) {
-        const double r = (A.dot(n) + side * a) / un;
+        const double r = (c.an + side * c.a) / un;
         if (r <= 0 || r >= best) continue;
-        const double t = (r * u - A).dot(ab) / l2;
+        const double t = ((r * ux - c.ax) * c.abx + (r * uy - c.ay) * c.aby) / c.l2;
         if (t >= 0 && t <= 1) best = r;
       }
     }
   }
-  for (const V* c : {&A, &B}) {
-    const double uc = u.dot(*c);
-    const double disc = uc * uc - c->squaredNorm() + a * a;
-    if (disc < 0) continue;
-    const double r = uc - std::sqrt(disc);
-    if (r > 0 && r < best) best = r;
+  {
+    const double uc = ux * c.ax + uy * c.ay;
+    const double disc = uc * uc - c.a2n + c.aa;
+    if (disc >= 0) {
+      const double r = uc - std::sqrt(disc);
+      if (r > 0 && r < best) best = r;
+    }
+  }
+  {
+    const double uc = ux * c.bx + uy * c.by;
+    const double disc = uc * uc - c.b2n + c.aa;
+    if (disc >= 0) {
+      const double r = uc - std::sqrt(disc);
+      if (r > 0 && r < best) best = r;
+    }
   }
   return best;
 }
@@ -108,6 +141,7 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
   for (int e = 0; e < s.n_elements(); ++e) {
     const V& A = s.nodes[e];
     const V& B = s.nodes[s.next(e)];
+    const Capsule cap(A, B, a);  // its own terms once for all its rays
     const double ra = A.norm(), rb = B.norm();
     const double rmin = std::max(1e-9, std::min(ra, rb) - a);
     const double widen = rmin > a ? std::asin(a / rmin) : kPi;
@@ -121,8 +155,7 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
     for (int k = 0; k <= nb; ++k) {
       int b = (b0 + k) % n;
       if (b < 0) b += n;
-      const V u(t.cos_e[b], t.sin_e[b]);
-      const double r = ray_capsule_entry(u, A, B, a);
+      const double r = capsule_entry(t.cos_e[b], t.sin_e[b], cap);
       if (r < t.edge_radius_m[b]) {
         t.edge_radius_m[b] = r;
         edge_element[b] = e;
@@ -168,7 +201,7 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
     double best = std::numeric_limits<double>::infinity();
     int be = none;
     for (int i = 0, e = first; i < count; ++i, e = e + 1 == ne ? 0 : e + 1) {
-      const double r = ray_capsule_entry(u, s.nodes[e], s.nodes[s.next(e)], a);
+      const double r = capsule_entry(u.x(), u.y(), Capsule(s.nodes[e], s.nodes[s.next(e)], a));
       if (r < best) {
         best = r;
         be = e;
