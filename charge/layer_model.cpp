@@ -299,12 +299,28 @@ class LayerSim {
     }
   }
   /// Offset b of the SlotMap from the outer layer to layer j at tau.
+  /// Remembered per layer: the maps and note_cell() (on every move of a
+  /// sweep or relaxation) ask for the same offset at one time many times.
+  /// The phases change only together with t_step0_, so (tau, t_step0_)
+  /// names the value.
   double colmap_offset(int j, double tau) const {
-    return wrap2pi(slot_angle(0, 0, tau) - slot_angle(j, 0, tau)) * L_[j].inv_delta + 0.5;
+    MapOffset& c = colmap_off_[j];
+    if (c.tau != tau || c.t0 != t_step0_) {
+      c.tau = tau;
+      c.t0 = t_step0_;
+      c.b = wrap2pi(slot_angle(0, 0, tau) - slot_angle(j, 0, tau)) * L_[j].inv_delta + 0.5;
+    }
+    return c.b;
   }
-  /// Offset b of the SlotMap from layer j to layer j - 1 at tau.
+  /// Offset b of the SlotMap from layer j to layer j - 1 at tau (remembered likewise).
   double supmap_offset(int j, double tau) const {
-    return wrap2pi(slot_angle(j, 0, tau) - slot_angle(j - 1, 0, tau)) * L_[j - 1].inv_delta + 0.5;
+    MapOffset& c = supmap_off_[j];
+    if (c.tau != tau || c.t0 != t_step0_) {
+      c.tau = tau;
+      c.t0 = t_step0_;
+      c.b = wrap2pi(slot_angle(j, 0, tau) - slot_angle(j - 1, 0, tau)) * L_[j - 1].inv_delta + 0.5;
+    }
+    return c.b;
   }
   /// out[s] = max (or min) of v over s - m .. s + m, circularly.
   void window_extreme(const std::vector<int>& v, int m, bool max, std::vector<int>& out);
@@ -416,6 +432,10 @@ class LayerSim {
   std::vector<SlotMap> supmap_;             // [j] layer j -> layer j - 1
   std::vector<double> colmap_b_;            // offsets of colmap_ at t_map_
   std::vector<double> supmap_b_;            // offsets of supmap_ at t_sup_
+  struct MapOffset {                        // colmap_offset() / supmap_offset() at (tau, t0)
+    double tau = kInf, t0 = kInf, b = 0;
+  };
+  mutable std::vector<MapOffset> colmap_off_, supmap_off_;  // [j]
   double t_sup_ = 0;                        // [s] time of the last support sweep
   bool maps_ready_ = false;                 // changes are noted from the start of the run
   bool col_full_ = true, sup_full_ = true;  // the next map / sweep is a full one
@@ -2232,6 +2252,8 @@ ChargeResult LayerSim::run() {
   }
   colmap_b_.assign(n_open_, 0.0);
   supmap_b_.assign(n_open_, 0.0);
+  colmap_off_.assign(L_.size(), MapOffset());
+  supmap_off_.assign(L_.size(), MapOffset());
   col_dirty_.assign(L_[0].S, 0);
   col_dirty_list_.clear();
   sup_dirty_.assign(occ_.size(), 0);
