@@ -51,14 +51,6 @@ ChargeOccupancy::ChargeOccupancy(double R, double d, double sense) : R_(R), d_(d
   inv_d_ = 1.0 / d;
 }
 
-int ChargeOccupancy::angular_bin(int j, double th) const {
-  int i = static_cast<int>(std::floor(th * inv_dth_[j]));
-  const int n = nt_[j];
-  if (i >= 0 && i < n) return i;
-  i %= n;
-  return i < 0 ? i + n : i;
-}
-
 void ChargeOccupancy::add_polar(const Eigen::Vector2d&, double th, double r, double area, double m, double w) {
   const int j = ring(r);
   add_to_bin(j, angular_bin(j, th), w * area, w * m);

@@ -94,20 +94,6 @@ inline __attribute__((always_inline)) double capsule_entry(double ux, double uy,
 
 }  // namespace
 
-int LinerRideTable::bin(double psi) const {
-  int b = static_cast<int>(std::floor(psi * inv_bin));
-  b %= n_bins;
-  return b < 0 ? b + n_bins : b;
-}
-
-int LinerRideTable::contact(double psi) const {
-  // nearest ray: floor(x + 1/2) without the libm call; the count of rays is
-  // a power of two, so the mask wraps negative ones too
-  const double x = psi * inv_contact_ray + 0.5;
-  const int j = static_cast<int>(x) - (x < static_cast<int>(x));
-  return contact_element[static_cast<size_t>(j & (static_cast<int>(contact_element.size()) - 1))];
-}
-
 double load_contact_spacing_m(const LinerSurface& s) {
   std::vector<double> len(s.length.begin(), s.length.end());
   if (len.empty()) return 0.002;
