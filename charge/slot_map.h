@@ -109,7 +109,13 @@ class SlotMap {
     const double* fr = frac_.data();
     const int* ord = order_.data();
     const long n = static_cast<long>(frac_.size());
-    for (long i = std::lower_bound(fr, fr + n, x0) - fr; i < n && fr[i] < x1; ++i) f(ord[i]);
+    // lower bound of x0: the fractional parts are spread evenly over [0, 1)
+    // (those of s S_b / S_a), so x0 n is within a few places of it; the two
+    // scans end on the first place not below x0 from wherever they start
+    long i = std::min(n, std::max(0L, static_cast<long>(x0 * static_cast<double>(n))));
+    while (i > 0 && fr[i - 1] >= x0) --i;
+    while (i < n && fr[i] < x0) ++i;
+    for (; i < n && fr[i] < x1; ++i) f(ord[i]);
   }
 
   int S_a_ = 0, S_b_ = 0;
