@@ -151,7 +151,9 @@ class LayerSim {
   // ---- setup
   void setup_geometry();
   void setup_layers();
-  void layout_slots();
+  /// The layers' cell angles and offsets, and with `tables` the slot
+  /// direction tables (left out before the cell counts are final).
+  void layout_slots(bool tables);
   void setup_flight_angles();
   void setup_initial_fill();
   // ---- state queries
@@ -705,7 +707,7 @@ void LayerSim::setup_pocket_loads() {
   }
 }
 
-void LayerSim::layout_slots() {
+void LayerSim::layout_slots(bool tables) {
   // offsets of each layer's slots in the occupancy array, and the slot direction tables
   int off = 0;
   for (Layer& l : L_) {
@@ -715,6 +717,7 @@ void LayerSim::layout_slots() {
     off += l.S;
   }
   occ_.assign(off, -1);
+  if (!tables) return;
   slot_cos_.resize(off);
   slot_sin_.resize(off);
   for (const Layer& l : L_)
@@ -733,7 +736,7 @@ void LayerSim::setup_layers() {
     l.r = r[j] = R_eff_ - (j + 0.5) * d_;
     l.S = std::max(1, static_cast<int>(std::lround(kTwoPi * l.r / d_)));  // equal-area cells of about d x d
   }
-  layout_slots();
+  layout_slots(false);  // the flight angles need the cell angles; the tables wait for the final cell counts
   dir_tau_.assign(nl, std::numeric_limits<double>::quiet_NaN());
   dir_c_.assign(nl, 1.0);
   dir_s_.assign(nl, 0.0);
@@ -842,7 +845,7 @@ void LayerSim::setup_layers() {
     notes_.push_back("the charge does not fit outside the inner radius; a slower layer was opened");
   }
   if (capacity() < N_) throw SimulationError("layer model: the charge does not fit inside the mill");
-  layout_slots();  // the partial layer has fewer cells
+  layout_slots(true);  // the partial layer has fewer cells
   m_ = rho_c_ * J_ * metrics_.free_area_m2 / N_;
   if (centrifuged) notes_.push_back(fmt::format("the mill runs at {:.3f} of critical, beyond Morrell's phi_c = {:.3f}: the charge centrifuges", phi_, phi_c));
   sin_fa_.resize(nl);
