@@ -1898,8 +1898,12 @@ void LayerSim::update_columns(double tau, bool window) {
     const SlotMap& map = colmap_[j];
     const double b0 = colmap_b_[j], b1 = colmap_offset(j, tau);
     const int* o = &occ_[L_[j].offset];
+    // local pointers: mark_col() stores, and the compiler would reload the
+    // vectors' data on every cell otherwise
+    const int* col = col_.data();
+    const char* dirty = col_dirty_.data();
     full = !map.changed(b0, D, [&](int s) {
-      if (j > col_[s] || col_dirty_[s]) return;
+      if (j > col[s] || dirty[s]) return;
       if ((o[map.cell(s, b0)] >= 0) != (o[map.cell(s, b1)] >= 0)) mark_col(s);
     });
   }
