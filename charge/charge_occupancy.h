@@ -76,8 +76,16 @@ class ChargeOccupancy {
   /// Time-averaged mass [kg per m] in bin (j, i).
   double mass(int j, int i) const { return time_s_ > 0 ? acc_m_[index(j, i)] / time_s_ : 0.0; }
   double ring_mid_radius(int j) const { return R_ - (j + 0.5) * d_; }
-  /// Angular bin of ring j holding angle theta [rad].
-  int angular_bin(int j, double theta_rad) const;
+  /// Angular bin of ring j holding angle theta [rad] (inline, floor without
+  /// the libm call: sample() asks for one per flight).
+  int angular_bin(int j, double theta_rad) const {
+    const double x = theta_rad * inv_dth_[j];
+    int i = static_cast<int>(x) - (x < static_cast<int>(x));
+    const int n = nt_[j];
+    if (i >= 0 && i < n) return i;
+    i %= n;
+    return i < 0 ? i + n : i;
+  }
   double sampled_time() const { return time_s_; }
 
  private:

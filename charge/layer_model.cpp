@@ -151,7 +151,9 @@ class LayerSim {
   // ---- setup
   void setup_geometry();
   void setup_layers();
-  void layout_slots();
+  /// The layers' cell angles and offsets, and with `tables` the slot
+  /// direction tables (left out before the cell counts are final).
+  void layout_slots(bool tables);
   void setup_flight_angles();
   void setup_initial_fill();
   // ---- state queries
@@ -215,8 +217,11 @@ class LayerSim {
   /// arc); -1 if it rests on the plate further ahead.
   int pocket_lifter(int j, int seg, double psi) const;
   void check_flights(double t1);
-  /// The events of a step, in a heap ordered by time (then departures,
-  /// landings, checks; then index: deterministic).
+  /// The events of a step, ordered by time (then departures, landings,
+  /// checks; then index: deterministic). events_ is kept sorted latest first,
+  /// so that the next event is at its back: most events are known at the
+  /// start of the step and sorted once; the few that arise during it
+  /// (landings found, launches) are inserted in order.
   enum EventKind { kDepart = 0, kLand = 1, kCheck = 2 };
   struct StepEvent {
     double t;
@@ -228,10 +233,17 @@ class LayerSim {
     return x.index > y.index;
   }
   void push_event(const StepEvent& e) {
-    events_.push_back(e);
-    std::push_heap(events_.begin(), events_.end(), event_after);
+    events_.insert(std::lower_bound(events_.begin(), events_.end(), e, event_after), e);
   }
+  /// Flight i's next event in the current step (its landing, or the check of
+  /// its next interval) if it has one there, else the flight waits for the
+  /// first step that has (wait_flight()).
   void schedule_flight(int i);
+  /// Files flight i under the first step from step k_min on that has its next
+  /// event: the steps take their flights from there (check_flights()), not
+  /// from a scan of every flight.
+  void wait_flight(int i, long long k_min);
+  __attribute__((noinline)) void wait_far(long long k, int id);
   /// Where the flight's unchecked path starts.
   static double next_check(const Flight& f) { return std::max({f.t_next, f.t_check, f.t0}); }
   bool check_flight(Flight& f, double t1, Landing& out);
@@ -276,9 +288,51 @@ class LayerSim {
   /// Whether the element at (k, s) at tau would roll, and where: the top
   /// cell (kn, sn) of the steepest-descent neighbouring column.
   bool roll_target(int k, int s, double tau, int& kn_out, int& sn_out);
-  /// Whether the top of the column above outer cell s may roll at tau (a
-  /// conservative filter for relax_surface(), from the column map).
-  bool relax_candidate(int s, double tau) const;
+  /// ncol(theta, tau), which also hands back the slots it found on the way:
+  /// at = slot_of(h, theta, tau) if h < n_open, below = slot_of(h - 1, theta,
+  /// tau) if h > 0 (the same values; the foot-stability rules need them).
+  int ncol_at(double theta, double tau, int& below, int& at) const {
+    // ncol()'s walks, in the same order over the same cells
+    const Layer& l0 = L_[0];
+    const double ph = l0.phase + l0.omega * (t_map_ - t_step0_);
+    int s0 = static_cast<int>(wrap2pi(theta - ph + 0.5 * l0.delta) * l0.inv_delta);
+    if (s0 >= l0.S) s0 -= l0.S;
+    int h = std::min(col_[s0], n_open_);
+    below = at = -1;
+    while (h < n_open_) {
+      const int q = slot_of(h, theta, tau);
+      if (occ(h, q) < 0) {
+        at = q;
+        break;
+      }
+      below = q;
+      ++h;
+    }
+    while (h > 0) {
+      const int q = below >= 0 ? below : slot_of(h - 1, theta, tau);
+      if (occ(h - 1, q) >= 0) {
+        below = q;
+        break;
+      }
+      at = q;
+      below = -1;
+      --h;
+    }
+    return h;
+  }
+  /// Marks in relax_cur_ the outer cells whose column's top may roll at tau
+  /// (a conservative filter for relax_surface(), from the column map).
+  void relax_candidates(double tau);
+  /// Whether the top of the column above outer cell s, h = col_[s] > 0 high,
+  /// may roll at tau, once the cheap first look of relax_candidates() let it
+  /// through (h_min: the smallest column within relax_reach_, at most n_open).
+  bool relax_candidate_exact(int s, int h, int h_min, double tau) const;
+  /// Bit sets of outer cells (relax_cur_, relax_next_): sets bits lo .. hi;
+  /// the first set bit at or after q (below n), the last at or before q; -1
+  /// if none.
+  static void bits_set(std::vector<std::uint64_t>& b, int lo, int hi);
+  static int bits_next(const std::vector<std::uint64_t>& b, int q, int n);
+  static int bits_prev(const std::vector<std::uint64_t>& b, int q);
   /// Column heights round the outer layer at tau, and with `window` their
   /// window maxima for the flights' clearance (bed_clearance()).
   void update_columns(double tau, bool window);
@@ -299,12 +353,28 @@ class LayerSim {
     }
   }
   /// Offset b of the SlotMap from the outer layer to layer j at tau.
+  /// Remembered per layer: the maps and note_cell() (on every move of a
+  /// sweep or relaxation) ask for the same offset at one time many times.
+  /// The phases change only together with t_step0_, so (tau, t_step0_)
+  /// names the value.
   double colmap_offset(int j, double tau) const {
-    return wrap2pi(slot_angle(0, 0, tau) - slot_angle(j, 0, tau)) * L_[j].inv_delta + 0.5;
+    MapOffset& c = colmap_off_[j];
+    if (c.tau != tau || c.t0 != t_step0_) {
+      c.tau = tau;
+      c.t0 = t_step0_;
+      c.b = wrap2pi(slot_angle(0, 0, tau) - slot_angle(j, 0, tau)) * L_[j].inv_delta + 0.5;
+    }
+    return c.b;
   }
-  /// Offset b of the SlotMap from layer j to layer j - 1 at tau.
+  /// Offset b of the SlotMap from layer j to layer j - 1 at tau (remembered likewise).
   double supmap_offset(int j, double tau) const {
-    return wrap2pi(slot_angle(j, 0, tau) - slot_angle(j - 1, 0, tau)) * L_[j - 1].inv_delta + 0.5;
+    MapOffset& c = supmap_off_[j];
+    if (c.tau != tau || c.t0 != t_step0_) {
+      c.tau = tau;
+      c.t0 = t_step0_;
+      c.b = wrap2pi(slot_angle(j, 0, tau) - slot_angle(j - 1, 0, tau)) * L_[j - 1].inv_delta + 0.5;
+    }
+    return c.b;
   }
   /// out[s] = max (or min) of v over s - m .. s + m, circularly.
   void window_extreme(const std::vector<int>& v, int m, bool max, std::vector<int>& out);
@@ -359,6 +429,15 @@ class LayerSim {
   std::vector<double> phase0_;              // [rad] phase of each layer at t = 0 (the phase is phase0 + omega t)
   std::vector<Flight> flights_;
   std::vector<StepEvent> events_;
+  // The waiting flights, by element id, filed under the step of their next
+  // event (wait_flight()): a ring of kWakeRing steps from the current one,
+  // and the flights further ahead.
+  static constexpr int kWakeRing = 512;
+  std::vector<std::vector<int>> wake_ring_ = std::vector<std::vector<int>>(kWakeRing);
+  std::vector<std::pair<long long, int>> wake_far_;  // (step, element id)
+  std::vector<int> wake_due_;               // scratch of check_flights()
+  std::vector<int> flight_pos_;             // [element id] index in flights_ of its latest flight
+  long long step_k_ = 0;                    // index of the step check_flights() runs next (or is running)
   double step_t1_ = 0;
   bool in_step_ = false;  // inside check_flights(): a launch schedules its flight
   std::vector<DepartureEvent> dep_events_;
@@ -408,14 +487,20 @@ class LayerSim {
   bool ring_is_layer_ = false;              // occupancy rings coincide with the layers, bins with slots
   std::vector<int> col_;                    // column height above each outer slot, at t_map_
   std::vector<int> colwin_;                 // max column height over outer slots s-m .. s+m
-  std::vector<int> win_pre_, win_suf_, win_val_;  // scratch of the window maxima
+  std::vector<int> win_pre_, win_val_;      // scratch of the window extremes
+  std::vector<std::int16_t> win16_val_, win16_tmp_;  // the same, for values that fit 16 bits
   std::vector<int> active_;                 // scratch: outer slots whose column is still growing
-  std::vector<char> relax_cur_, relax_next_;  // scratch of relax_surface(): columns to visit
+  std::vector<std::uint64_t> relax_cur_, relax_next_;  // scratch of relax_surface(): columns to visit (bits)
+  std::vector<double> relax_tol_, relax_past_sn_, relax_ovh_sn_;  // [layer] the first look's bounds (relax_candidates())
   // incremental maps (docs/models/layer.md §Incremental maps)
   std::vector<SlotMap> colmap_;             // [j] outer layer -> layer j
   std::vector<SlotMap> supmap_;             // [j] layer j -> layer j - 1
   std::vector<double> colmap_b_;            // offsets of colmap_ at t_map_
   std::vector<double> supmap_b_;            // offsets of supmap_ at t_sup_
+  struct MapOffset {                        // colmap_offset() / supmap_offset() at (tau, t0)
+    double tau = kInf, t0 = kInf, b = 0;
+  };
+  mutable std::vector<MapOffset> colmap_off_, supmap_off_;  // [j]
   double t_sup_ = 0;                        // [s] time of the last support sweep
   bool maps_ready_ = false;                 // changes are noted from the start of the run
   bool col_full_ = true, sup_full_ = true;  // the next map / sweep is a full one
@@ -685,7 +770,7 @@ void LayerSim::setup_pocket_loads() {
   }
 }
 
-void LayerSim::layout_slots() {
+void LayerSim::layout_slots(bool tables) {
   // offsets of each layer's slots in the occupancy array, and the slot direction tables
   int off = 0;
   for (Layer& l : L_) {
@@ -695,6 +780,7 @@ void LayerSim::layout_slots() {
     off += l.S;
   }
   occ_.assign(off, -1);
+  if (!tables) return;
   slot_cos_.resize(off);
   slot_sin_.resize(off);
   for (const Layer& l : L_)
@@ -713,7 +799,7 @@ void LayerSim::setup_layers() {
     l.r = r[j] = R_eff_ - (j + 0.5) * d_;
     l.S = std::max(1, static_cast<int>(std::lround(kTwoPi * l.r / d_)));  // equal-area cells of about d x d
   }
-  layout_slots();
+  layout_slots(false);  // the flight angles need the cell angles; the tables wait for the final cell counts
   dir_tau_.assign(nl, std::numeric_limits<double>::quiet_NaN());
   dir_c_.assign(nl, 1.0);
   dir_s_.assign(nl, 0.0);
@@ -822,7 +908,7 @@ void LayerSim::setup_layers() {
     notes_.push_back("the charge does not fit outside the inner radius; a slower layer was opened");
   }
   if (capacity() < N_) throw SimulationError("layer model: the charge does not fit inside the mill");
-  layout_slots();  // the partial layer has fewer cells
+  layout_slots(true);  // the partial layer has fewer cells
   m_ = rho_c_ * J_ * metrics_.free_area_m2 / N_;
   if (centrifuged) notes_.push_back(fmt::format("the mill runs at {:.3f} of critical, beyond Morrell's phi_c = {:.3f}: the charge centrifuges", phi_, phi_c));
   sin_fa_.resize(nl);
@@ -1048,13 +1134,17 @@ void LayerSim::launch(int j, int s, double tau, int seg, bool relaunch) {
   if (!relaunch && averaging_ && f.t0 >= t_avg0_ && f.t0 < t_end_)
     energy_ += m_ * (kGravity * (f.p0.y() - elem_y_entry_[id]) + 0.5 * f.v0.squaredNorm());
   ++n_flights_;
+  if (flight_pos_.empty()) flight_pos_.assign(N_, -1);
+  flight_pos_[id] = static_cast<int>(flights_.size());
   flights_.push_back(f);
   // A departure's flight is checked from its launch on (check_flights()). A
   // relaunch from a landing waits for the next step, as before the event
   // queue: an element that lands past its layer's flight angle against a
   // lifter can be relaunched into the liner at once, and would otherwise
   // bounce without end at one instant (found by the forecast soak, run 11).
-  if (in_step_ && !relaunch) schedule_flight(static_cast<int>(flights_.size()) - 1);
+  const int i = static_cast<int>(flights_.size()) - 1;
+  if (in_step_ && !relaunch) schedule_flight(i);
+  else wait_flight(i, in_step_ ? step_k_ + 1 : step_k_);
 }
 
 int LayerSim::pocket_lifter(int j, int seg, double psi) const {
@@ -1079,6 +1169,22 @@ int LayerSim::pocket_lifter(int j, int seg, double psi) const {
   return off * L_[j].r < foot + pocket_balls_ * d_ ? k : -1;
 }
 
+/// ceil for |x| < 2^62 without a libm call (as fast_floor()).
+inline double fast_ceil(double x) {
+  const double t = static_cast<double>(static_cast<long long>(x));
+  return t < x ? t + 1.0 : t;
+}
+
+/// std::remainder(x, 2 pi), without the libm call where |x| < 2 pi: x itself
+/// up to pi (at pi the tie goes to the even quotient 0), else x -+ 2 pi, which
+/// is exact there (Sterbenz) and so what std::remainder returns.
+inline double remainder_2pi(double x) {
+  const double ax = std::abs(x);
+  if (ax <= kPi) return x;
+  if (ax < kTwoPi) return x > 0 ? x - kTwoPi : x + kTwoPi;
+  return std::remainder(x, kTwoPi);
+}
+
 void LayerSim::departures(double t0, double t1) {
   dep_events_.clear();
   const double dt = t1 - t0;
@@ -1091,8 +1197,8 @@ void LayerSim::departures(double t0, double t1) {
       const double lo = std::min(l.rel_min, l.release), hi = std::max(l.rel_max, std::isfinite(l.release) ? l.release : -kInf);
       if (!std::isfinite(lo)) continue;
       const double u = wrap2pi(lo - l.phase);
-      const int s_lo = static_cast<int>(std::ceil((u - 2 * wdt) * l.inv_delta));
-      const int s_hi = static_cast<int>(std::ceil((u + (hi - lo)) * l.inv_delta));
+      const int s_lo = static_cast<int>(fast_ceil((u - 2 * wdt) * l.inv_delta));
+      const int s_hi = static_cast<int>(fast_ceil((u + (hi - lo)) * l.inv_delta));
       for (int s = s_lo; s <= s_hi; ++s) {
         int si = s % l.S;
         if (si < 0) si += l.S;
@@ -1106,7 +1212,7 @@ void LayerSim::departures(double t0, double t1) {
         const HeldLaunch& h = seg >= 0 ? held_[j][seg] : kUnheldLaunch;
         const double rel = h.held ? (h.released ? h.release : kInf) : l.release;
         if (!std::isfinite(rel)) continue;
-        const double w = std::remainder(rel - a0, kTwoPi);
+        const double w = remainder_2pi(rel - a0);
         if (w > -wdt && w <= wdt) dep_events_.push_back({t0 + w / l.omega, j, si, h.held ? seg : -1});
       }
     } else {
@@ -1114,8 +1220,8 @@ void LayerSim::departures(double t0, double t1) {
       // slots crossing the flight angle in this step, or in the previous one
       // after its scan (placed there by a landing): w in (-wdt, wdt]
       const double u = wrap2pi(l.release - l.phase);
-      const int s_lo = static_cast<int>(std::ceil((u - wdt) * l.inv_delta));
-      const int s_hi = static_cast<int>(std::ceil((u + wdt) * l.inv_delta)) - 1;
+      const int s_lo = static_cast<int>(fast_ceil((u - wdt) * l.inv_delta));
+      const int s_hi = static_cast<int>(fast_ceil((u + wdt) * l.inv_delta)) - 1;
       for (int s = s_lo; s <= s_hi; ++s) {
         int si = s % l.S;
         if (si < 0) si += l.S;
@@ -1187,8 +1293,11 @@ bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
     // the distance to the nearer (no check needed).
     // The clearance to the liner and to the innermost open layer holds at
     // any time; the one from the column map only for skip_H_ after it.
+    // (Near the liner the interval is a near one whatever the bed's clearance.)
     const double d_liner = r_ride_min - ra;
-    const double d_bed = ra < r_open_min_ ? r_open_min_ - ra : bed_clearance(ra, fast_atan2(pa.y(), pa.x()), tau);
+    const double d_bed = d_liner <= sample_len ? kInf
+                         : ra < r_open_min_    ? r_open_min_ - ra
+                                               : bed_clearance(ra, fast_atan2(pa.y(), pa.x()), tau);
     const double dist = std::min(d_liner, d_bed);
     if (dist > sample_len) {
       const double sp = std::max(spv, 1e-3);
@@ -1321,18 +1430,33 @@ void LayerSim::check_flights(double t1) {
     if (x.j != y.j) return x.j < y.j;
     return x.s < y.s;
   });
+  if (t1 != static_cast<double>(step_k_ + 1) * dt_)  // wait_flight() computes the steps' ends so
+    throw SimulationError("layer model: the steps and the flights' wake steps disagree");
   events_.clear();
   step_t1_ = t1;
-  for (int i = 0; i < static_cast<int>(dep_events_.size()); ++i) push_event({dep_events_[i].t, kDepart, i});
-  // (most flights have nothing to do in a step: the test first, inline)
-  for (int i = 0; i < static_cast<int>(flights_.size()); ++i) {
-    const Flight& f = flights_[i];
-    if (f.landed ? f.landing.t <= t1 : next_check(f) < t1) schedule_flight(i);
+  for (int i = 0; i < static_cast<int>(dep_events_.size()); ++i) events_.push_back({dep_events_[i].t, kDepart, i});
+  // the flights with something to do in this step: those filed under it
+  // (the flights further ahead move into the ring as it comes round to them)
+  wake_due_.swap(wake_ring_[step_k_ & (kWakeRing - 1)]);
+  if (!wake_far_.empty() && (step_k_ & (kWakeRing - 1)) == 0) {
+    size_t n = 0;
+    for (const auto& w : wake_far_) {
+      if (w.first - step_k_ >= kWakeRing) wake_far_[n++] = w;
+      else if (w.first == step_k_) wake_due_.push_back(w.second);
+      else wake_ring_[w.first & (kWakeRing - 1)].push_back(w.second);
+    }
+    wake_far_.resize(n);
   }
+  for (const int id : wake_due_) {
+    const int i = flight_pos_[id];
+    const Flight& f = flights_[i];
+    events_.push_back(f.landed ? StepEvent{f.landing.t, kLand, i} : StepEvent{next_check(f), kCheck, i});
+  }
+  wake_due_.clear();
+  std::sort(events_.begin(), events_.end(), event_after);
   in_step_ = true;
   gone_.clear();
   while (!events_.empty()) {
-    std::pop_heap(events_.begin(), events_.end(), event_after);
     const StepEvent ev = events_.back();
     events_.pop_back();
     if (ev.kind == kDepart) {
@@ -1348,7 +1472,7 @@ void LayerSim::check_flights(double t1) {
     if (ev.kind == kCheck) {
       // the path up to the next event (at least one interval), then the
       // flight waits for its next interval or its landing
-      double t_lim = events_.empty() ? t1 : std::min(t1, events_.front().t);
+      double t_lim = events_.empty() ? t1 : std::min(t1, events_.back().t);
       // at least one interval: check_flight() walks whole intervals, but
       // check_flight_drag() ends one at t_lim, so it gets one drag step (1 ms)
       t_lim = std::max(t_lim, drag_on_ ? next_check(f) + 1e-3 : next_up(next_check(f)));
@@ -1400,12 +1524,14 @@ void LayerSim::check_flights(double t1) {
     deposit(f.id, th, land.t, land.v);
   }
   in_step_ = false;
+  ++step_k_;
   // remove the landed flights (highest index first, swapping in the last)
   if (gone_.empty()) return;
   std::sort(gone_.begin(), gone_.end(), std::greater<int>());
   for (const int i : gone_) {
     if (i != static_cast<int>(flights_.size()) - 1) {
       flights_[i] = flights_.back();
+      flight_pos_[flights_[i].id] = i;
     }
     flights_.pop_back();
   }
@@ -1417,11 +1543,39 @@ void LayerSim::schedule_flight(int i) {
   const Flight& f = flights_[i];
   if (f.landed) {
     if (f.landing.t <= step_t1_) push_event({f.landing.t, kLand, i});
+    else wait_flight(i, step_k_ + 1);
     return;
   }
   const double tc = next_check(f);
   if (tc < step_t1_) push_event({tc, kCheck, i});
+  else wait_flight(i, step_k_ + 1);
 }
+
+void LayerSim::wait_flight(int i, long long k_min) {
+  // The first step k >= k_min whose end t1 = (k + 1) dt (as run() computes
+  // it) the flight's event is due by, on the tests of schedule_flight();
+  // estimated from the time, then settled by those tests.
+  const Flight& f = flights_[i];
+  const bool landed = f.landed;
+  const double w = landed ? f.landing.t : next_check(f);
+  auto due = [&](long long k) {
+    const double t1 = static_cast<double>(k + 1) * dt_;
+    return landed ? w <= t1 : w < t1;
+  };
+  const double q = w / dt_;
+  long long k = k_min;
+  if (!(q <= static_cast<double>(k_min))) {
+    // never (not finite: as the scan it replaced, which never found it due)
+    if (!(q < 1e15)) return wait_far(std::numeric_limits<long long>::max(), f.id);
+    k = static_cast<long long>(q);  // floor(w / dt): k dt <= w < (k + 1) dt but for rounding
+    while (k > k_min && due(k - 1)) --k;
+  }
+  while (!due(k)) ++k;
+  if (k - step_k_ >= kWakeRing) return wait_far(k, f.id);
+  wake_ring_[k & (kWakeRing - 1)].push_back(f.id);
+}
+
+void LayerSim::wait_far(long long k, int id) { wake_far_.emplace_back(k, id); }
 
 // ============================================================================
 // Re-entry and foot stability
@@ -1486,14 +1640,24 @@ bool LayerSim::toe_ward_room(double& theta, double tau, bool holdable, int& k_ou
   const double step = l0.delta;
   int s0 = static_cast<int>(wrap2pi(theta - (l0.phase + l0.omega * (t_map_ - t_step0_)) + 0.5 * l0.delta) * l0.inv_delta);
   if (s0 >= S0) s0 -= S0;
+  const int* col = col_.data();
+  const int n_open = n_open_;
   int i = 0;
   while (i < 2 * S0) {
-    // the next column the map shows with room
+    // the next column the map shows with room, n >= 1 steps back (at most
+    // 2 S0 - i): runs down to cell 0 without a wrap test per cell
+    const int lim = 2 * S0 - i;
     int n = 0;
-    do {
-      ++n;
-      if (--s0 < 0) s0 += S0;
-    } while (col_[s0] >= n_open_ && i + n < 2 * S0);
+    for (;;) {
+      if (s0 == 0) s0 = S0;  // the next step wraps
+      const int stop = std::max(0, s0 - (lim - n));  // the lowest cell this run may reach
+      int p = s0 - 1;
+      while (p - 4 >= stop && std::min(std::min(col[p], col[p - 1]), std::min(col[p - 2], col[p - 3])) >= n_open) p -= 4;
+      while (p > stop && col[p] >= n_open) --p;
+      n += s0 - p;
+      s0 = p;
+      if (col[p] < n_open || n >= lim) break;
+    }
     i += n;
     theta -= n * step;
     if (col_[s0] >= n_open_) break;
@@ -1571,11 +1735,11 @@ bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out) {
     if (past && dir > 0) continue;  // past the flight angle: only down the rising side
     const double thn = th + dir * L_[k].delta;
     occ(k, s) = -1;  // the neighbouring column without this element
-    const int kn = ncol(thn, tau);
+    int sb, sn;  // sn = slot_of(kn, thn, tau) where kn < n_open
+    const int kn = ncol_at(thn, tau, sb, sn);
     occ(k, s) = id;
     if (kn >= n_open_) continue;
     if (kn == 0 && k == 0 && !past) continue;  // on the liner the lifters hold it
-    const int sn = slot_of(kn, thn, tau);
     if (kn == k && sn == s) continue;
     double cn, snn;
     slot_dir(kn, sn, tau, cn, snn);
@@ -1594,9 +1758,9 @@ bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out) {
     const V q(x, y - d_);
     const double rq = q.norm(), thq = fast_atan2(q.y(), q.x());
     if (!inside_charge(q, rq, thq, tau)) {
-      const int kq = ncol(thq, tau);
+      int sqb, sq;  // sq = slot_of(kq, thq, tau) where kq < n_open
+      const int kq = ncol_at(thq, tau, sqb, sq);
       if (kq < n_open_) {
-        const int sq = slot_of(kq, thq, tau);
         double cq, sq_th;
         slot_dir(kq, sq, tau, cq, sq_th);
         const double yq = L_[kq].r * sq_th;
@@ -1617,46 +1781,62 @@ void LayerSim::relax_surface(double tau) {
   // must), then the next one, until the column is stable.
   //
   // Only columns whose top could roll are visited: the first pass takes the
-  // candidates of the fresh column map (relax_candidate(), a conservative
+  // candidates of the fresh column map (relax_candidates(), a conservative
   // test), and a move marks the columns within reach of its source and its
   // destination (the neighbours roll_target() looks at lie within
   // relax_reach_ outer cells) for the rest of this pass and the next. Since a
   // column whose surroundings did not change cannot start to roll, this
   // visits every column the full sweep would move, in the same order.
+  //
+  // The columns to visit are bit sets (one bit per outer cell), so that a
+  // pass finds its next marked column a word at a time and a mark sets a
+  // range: a pass visits a few dozen of the hundreds of columns.
   const Layer& l0 = L_[0];
   const int S0 = l0.S;
-  relax_cur_.assign(S0, 0);
-  relax_next_.assign(S0, 0);
+  const int nw = (S0 + 63) / 64;
+  relax_cur_.assign(nw, 0);
+  relax_next_.assign(nw, 0);
   window_extreme(col_, relax_reach_, false, colmin_);
-  for (int s = 0; s < S0; ++s) relax_cur_[s] = !incremental_ || relax_candidate(s, tau);
+  if (incremental_) relax_candidates(tau);
+  else bits_set(relax_cur_, 0, S0 - 1);
   auto mark = [&](int c) {
     if (2 * relax_reach_ + 1 >= S0) {  // the reach covers the ring
-      std::fill(relax_cur_.begin(), relax_cur_.end(), 1);
-      std::fill(relax_next_.begin(), relax_next_.end(), 1);
+      bits_set(relax_cur_, 0, S0 - 1);
+      bits_set(relax_next_, 0, S0 - 1);
       return;
     }
-    for (int o = -relax_reach_; o <= relax_reach_; ++o) {
-      int i = c + o;
-      if (i < 0) i += S0;
-      else if (i >= S0) i -= S0;
-      relax_cur_[i] = 1;
-      relax_next_[i] = 1;
+    // c - reach .. c + reach, circularly (shorter than the ring)
+    const int lo = c - relax_reach_, hi = c + relax_reach_;
+    if (lo < 0) {
+      bits_set(relax_cur_, lo + S0, S0 - 1);
+      bits_set(relax_next_, lo + S0, S0 - 1);
+    } else if (hi >= S0) {
+      bits_set(relax_cur_, 0, hi - S0);
+      bits_set(relax_next_, 0, hi - S0);
     }
+    bits_set(relax_cur_, std::max(lo, 0), std::min(hi, S0 - 1));
+    bits_set(relax_next_, std::max(lo, 0), std::min(hi, S0 - 1));
   };
   for (int pass = 0; pass < 6; ++pass) {
     int moved = 0;
-    for (int q = 0; q < S0; ++q) {
-      const int s0 = pass % 2 == 0 ? q : S0 - 1 - q;
-      if (!relax_cur_[s0]) continue;
+    const bool up = pass % 2 == 0;
+    // the next marked column at or after (up) / before (down) q, as the
+    // marks stand now (a move marks columns still to come in this pass)
+    for (int s0 = up ? bits_next(relax_cur_, 0, S0) : bits_prev(relax_cur_, S0 - 1); s0 >= 0;
+         s0 = up ? bits_next(relax_cur_, s0 + 1, S0) : bits_prev(relax_cur_, s0 - 1)) {
       const double th = slot_angle(0, s0, tau);
+      bool stable = false;
       for (int top = 0; top < 32; ++top) {
-        const int h = ncol(th, tau);
+        int s, s_free;  // s = slot_of(h - 1, th, tau) where h > 0
+        const int h = ncol_at(th, tau, s, s_free);
+        stable = true;
         if (h == 0) break;
-        int k = h - 1, s = slot_of(k, th, tau);
+        const int k = h - 1;
         const int id = occ(k, s);
         if (id < 0) break;
         int kn, sn;
         if (!roll_target(k, s, tau, kn, sn)) break;
+        stable = false;
         ++moved;
         // the mill lifted it to here since it entered; it settles lower
         double c0, s0y;
@@ -1669,43 +1849,153 @@ void LayerSim::relax_surface(double tau) {
         mark(slot_of(0, slot_angle(kn, sn, tau), tau));
         if (elem_layer_[id] >= 0) mark(slot_of(0, slot_angle(elem_layer_[id], elem_slot_[id], tau), tau));
       }
+      // The column is stable as things stand: the next pass need not look at
+      // it again unless a later move within reach marks it anew (a visit
+      // then finds what this one found).
+      if (stable) relax_next_[s0 >> 6] &= ~(std::uint64_t{1} << (s0 & 63));
     }
     if (moved == 0) break;
     std::swap(relax_cur_, relax_next_);
     std::fill(relax_next_.begin(), relax_next_.end(), 0);
-    if (!incremental_) std::fill(relax_cur_.begin(), relax_cur_.end(), 1);
+    if (!incremental_) bits_set(relax_cur_, 0, S0 - 1);
   }
 }
 
-bool LayerSim::relax_candidate(int s, double tau) const {
+void LayerSim::bits_set(std::vector<std::uint64_t>& b, int lo, int hi) {
+  // bits lo .. hi (lo <= hi)
+  const int w0 = lo >> 6, w1 = hi >> 6;
+  const std::uint64_t m0 = ~std::uint64_t{0} << (lo & 63);
+  const std::uint64_t m1 = ~std::uint64_t{0} >> (63 - (hi & 63));
+  if (w0 == w1) {
+    b[w0] |= m0 & m1;
+    return;
+  }
+  b[w0] |= m0;
+  for (int w = w0 + 1; w < w1; ++w) b[w] = ~std::uint64_t{0};
+  b[w1] |= m1;
+}
+
+int LayerSim::bits_next(const std::vector<std::uint64_t>& b, int q, int n) {
+  // the first set bit at or after q (bits at n and beyond are never set), -1 if none
+  if (q >= n) return -1;
+  int w = q >> 6;
+  std::uint64_t x = b[w] & (~std::uint64_t{0} << (q & 63));
+  const int nw = static_cast<int>(b.size());
+  while (!x) {
+    if (++w >= nw) return -1;
+    x = b[w];
+  }
+  return (w << 6) + __builtin_ctzll(x);
+}
+
+int LayerSim::bits_prev(const std::vector<std::uint64_t>& b, int q) {
+  // the last set bit at or before q, -1 if none
+  if (q < 0) return -1;
+  int w = q >> 6;
+  std::uint64_t x = b[w] & (~std::uint64_t{0} >> (63 - (q & 63)));
+  while (!x) {
+    if (--w < 0) return -1;
+    x = b[w];
+  }
+  return (w << 6) + 63 - __builtin_clzll(x);
+}
+
+void LayerSim::relax_candidates(double tau) {
+  // The candidate test for every outer cell into relax_cur_: its cheap first
+  // look (described at relax_candidate_exact()) evaluated here from
+  // per-layer constants and the outer layer's direction at tau (the same
+  // products as slot_dir(), so the same values), then the exact rest.
+  const int n = n_open_;
+  if (static_cast<int>(relax_tol_.size()) != n) {
+    relax_tol_.resize(n);
+    relax_past_sn_.resize(n);
+    relax_ovh_sn_.resize(n);
+    for (int k = 0; k < n; ++k) {
+      const double tol = L_[k].delta + L_[0].delta;
+      relax_tol_[k] = tol;
+      relax_past_sn_[k] = sin_fa_[k] - tol;
+      relax_ovh_sn_[k] = 0.3 - tol;
+    }
+  }
+  const Layer& l0 = L_[0];
+  const int S0 = l0.S;
+  double c0, s0;
+  slot_dir(0, 0, tau, c0, s0);  // refreshes the cached direction of layer 0 at tau
+  const double dc = dir_c_[0], ds = dir_s_[0];
+  const double* cs = &slot_cos_[l0.offset];
+  const double* ss = &slot_sin_[l0.offset];
+  const int* col = col_.data();
+  const int* cmin = colmin_.data();
+  std::uint64_t* bits = relax_cur_.data();
+  // inside the charge (every column within reach full: h = h_min = n_open)
+  // only the past rule can let a top through, where sin > past_sn_full: in
+  // the arc of angles asin(past_sn_full) .. pi - asin(past_sn_full). Columns
+  // outside it widened by one outer cell each side (far beyond the rounding
+  // of the directions) are passed over without their direction: the arc's
+  // outer cells are arc_start .. arc_start + arc_len - 1 (circularly).
+  const double tol_full = relax_tol_[n - 1], past_sn_full = relax_past_sn_[n - 1];
+  int arc_start = 0, arc_len = S0;
+  if (past_sn_full >= 1.0 + 1e-9) {
+    arc_len = 0;  // never past (the layer never lets go)
+  } else if (past_sn_full > -0.9) {
+    const double as = std::asin(std::min(past_sn_full, 1.0));
+    const double ph = l0.phase + l0.omega * (tau - t_step0_);
+    arc_start = static_cast<int>(wrap2pi(as - l0.delta - ph) * l0.inv_delta);
+    if (arc_start >= S0) arc_start -= S0;
+    arc_len = std::min(S0, static_cast<int>(std::ceil((kPi - 2.0 * as + 2.0 * l0.delta) * l0.inv_delta)) + 2);
+  }
+  for (int s = 0; s < S0; ++s) {
+    const int h = col[s];
+    if (h == 0) continue;
+    if (cmin[s] >= n) {
+      int u = s - arc_start;
+      if (u < 0) u += S0;
+      if (u >= arc_len) continue;
+      // the first look, from the direction of the column's centre
+      const double c = dc * cs[s] - ds * ss[s];
+      if (!(c > -tol_full)) continue;
+      const double sn = ds * cs[s] + dc * ss[s];
+      if (!(sn > past_sn_full)) continue;
+      if (relax_candidate_exact(s, h, n, tau)) bits[s >> 6] |= std::uint64_t{1} << (s & 63);
+      continue;
+    }
+    const int k = h - 1;
+    const int h_min = cmin[s];  // < n
+    const bool unheld = !L_[k].held;
+    const double c = dc * cs[s] - ds * ss[s];
+    const double sn = ds * cs[s] + dc * ss[s];
+    const double tol = relax_tol_[k];
+    const bool past = c > -tol && sn > relax_past_sn_[k];
+    const bool overhang = k > 0 && unheld && (h_min < h || (sn > relax_ovh_sn_[k] && h < n));
+    const bool repose = unheld && c < tol;  // h_min < n
+    if (!past && !overhang && !repose) continue;
+    if (relax_candidate_exact(s, h, h_min, tau)) bits[s >> 6] |= std::uint64_t{1} << (s & 63);
+  }
+}
+
+bool LayerSim::relax_candidate_exact(int s, int h, int h_min, double tau) const {
   // Whether the top of the column above outer cell s may roll, from the
   // fresh column map at tau. Conservative: false only where roll_target()
-  // must return false for that top.
-  const int h = col_[s];  // = ncol() at the centre of cell s: the map is fresh
-  if (h == 0) return false;
-  const int k = h - 1;
+  // must return false for that top. h = col_[s] > 0 (= ncol() at the centre
+  // of cell s: the map is fresh); the cheap first look (relax_candidates())
+  // has let it through.
+  //
   // Bounds used below: at any angle within relax_reach_ outer cells of s the
   // top found by ncol() is at least the smallest column height h_min there
   // (every cell of layer j < h_min is occupied at the outer-cell centres, and
   // each cell of layer j contains one of them), so a cell an element could
   // roll into lies between the radii of layers h_min and n_open - 1.
-  const int h_min = std::min(n_open_, colmin_[s]);  // over s +- relax_reach_
-  // a held top moves only by the past rule; an unheld one also by repose
-  // and (above the outer layer) over an overhang, as in roll_target()
+  // h_min = min(n_open, colmin_[s]), over s +- relax_reach_.
+  //
+  // The first look, from the direction of the column's centre (cheap): the
+  // top's slot is within half its cell plus half an outer cell of it, so it
+  // allows that much angle (sin and cos change no faster); past: c > -tol and
+  // sn > sin_fa - tol; an overhang (see below): k > 0, unheld and (h_min < h
+  // or sn > 0.3 - tol and h < n_open); repose: unheld, c < tol and h_min <
+  // n_open. A held top moves only by the past rule; an unheld one also by
+  // repose and (above the outer layer) over an overhang, as in roll_target().
+  const int k = h - 1;
   const bool unheld = !L_[k].held;
-  // A first look from the direction of the column's centre (cheap): the
-  // top's slot is within half its cell plus half an outer cell of it, so
-  // allow that much angle (sin and cos change no faster).
-  {
-    double c, sn;
-    slot_dir(0, s, tau, c, sn);
-    const double tol = L_[k].delta + L_[0].delta;
-    const bool past = c > -tol && sn > sin_fa_[k] - tol;
-    // an overhang: see below
-    const bool overhang = k > 0 && unheld && (h_min < h || (sn > 0.3 - tol && h < n_open_));
-    const bool repose = unheld && c < tol && h_min < n_open_;
-    if (!past && !overhang && !repose) return false;
-  }
   // the top itself: the cell ncol() and slot_of() find at the column's
   // centre, as relax_surface() takes it; the past and overhang tests below
   // are roll_target()'s own, evaluated exactly as there
@@ -1716,6 +2006,27 @@ bool LayerSim::relax_candidate(int s, double tau) const {
   if (ct > 0 && stp > sin_fa_[k]) return true;  // past the flight angle
   if (!unheld) return false;
   const double x = L_[k].r * ct, y = L_[k].r * stp;
+  // The repose bound first (cheaper than the overhang's look at the cell
+  // below; the answer is the same either way round).
+  if (ct < 0 && h_min < n_open_) {
+    // the toe side, repose: the lowest and nearest a neighbouring free cell
+    // can be against the angle-of-repose line through the top (with full
+    // columns all round there is nowhere to roll)
+    const double r_out = L_[h_min].r, r_in = L_[n_open_ - 1].r;
+    // The neighbouring directions are the top's turned by -+ delta_k; the
+    // centre of the cell roll_target() finds there is up to half that cell's
+    // angle further, at most sl along the arc (the innermost open layer has
+    // the widest cells). A little slack for the rounding of the rotation.
+    const double sl = 0.5 * r_out * L_[n_open_ - 1].delta;
+    const double cd = cos_delta_[k], sd = sin_delta_[k];
+    for (double dir : {-1.0, 1.0}) {
+      const double cn = ct * cd - dir * stp * sd, snn = stp * cd + dir * ct * sd;
+      const double y_low = std::min(r_out * snn, r_in * snn) - sl;
+      const double x_a = std::min(r_out * cn, r_in * cn) - sl, x_b = std::max(r_out * cn, r_in * cn) + sl;
+      const double run_min = x < x_a ? x_a - x : (x > x_b ? x - x_b : 0.0);
+      if (y_low < y + 1e-9 && y - y_low > tan_g_ * run_min - 1e-9) return true;
+    }
+  }
   // an overhang. While sin(theta) <= 0.3 the point one diameter below the
   // top lies in the top's ring or outside it, where every column within
   // reach at least as tall as this one fills it; above that it may reach
@@ -1725,24 +2036,6 @@ bool LayerSim::relax_candidate(int s, double tau) const {
   if (k > 0 && (h_min < h || (stp > 0.3 && h < n_open_))) {
     const V q(x, y - d_);
     if (!inside_charge(q, q.norm(), tau)) return true;
-  }
-  if (ct >= 0) return false;  // the rising side: no repose rule
-  // the toe side, repose: the lowest and nearest a neighbouring free cell
-  // can be against the angle-of-repose line through the top
-  if (h_min >= n_open_) return false;  // full columns all round: nowhere to roll
-  const double r_out = L_[h_min].r, r_in = L_[n_open_ - 1].r;
-  // The neighbouring directions are the top's turned by -+ delta_k; the
-  // centre of the cell roll_target() finds there is up to half that cell's
-  // angle further, at most sl along the arc (the innermost open layer has
-  // the widest cells). A little slack for the rounding of the rotation.
-  const double sl = 0.5 * r_out * L_[n_open_ - 1].delta;
-  const double cd = cos_delta_[k], sd = sin_delta_[k];
-  for (double dir : {-1.0, 1.0}) {
-    const double cn = ct * cd - dir * stp * sd, snn = stp * cd + dir * ct * sd;
-    const double y_low = std::min(r_out * snn, r_in * snn) - sl;
-    const double x_a = std::min(r_out * cn, r_in * cn) - sl, x_b = std::max(r_out * cn, r_in * cn) + sl;
-    const double run_min = x < x_a ? x_a - x : (x > x_b ? x - x_b : 0.0);
-    if (y_low < y + 1e-9 && y - y_low > tan_g_ * run_min - 1e-9) return true;
   }
   return false;
 }
@@ -1875,8 +2168,12 @@ void LayerSim::update_columns(double tau, bool window) {
     const SlotMap& map = colmap_[j];
     const double b0 = colmap_b_[j], b1 = colmap_offset(j, tau);
     const int* o = &occ_[L_[j].offset];
+    // local pointers: mark_col() stores, and the compiler would reload the
+    // vectors' data on every cell otherwise
+    const int* col = col_.data();
+    const char* dirty = col_dirty_.data();
     full = !map.changed(b0, D, [&](int s) {
-      if (j > col_[s] || col_dirty_[s]) return;
+      if (j > col[s] || dirty[s]) return;
       if ((o[map.cell(s, b0)] >= 0) != (o[map.cell(s, b1)] >= 0)) mark_col(s);
     });
   }
@@ -1921,44 +2218,61 @@ void LayerSim::update_columns(double tau, bool window) {
   t_win_ = tau;
 }
 
+/// window_extreme()'s extremes: out[s] = op-extreme of val[s .. s + w - 1]
+/// (val: the ring unrolled, n = S + w - 1 values). By doubling: after each
+/// level, val[p] holds the extreme over a span twice as long (each level a
+/// loop without a carried dependence); the window is then the union of two
+/// spans L <= w < 2 L long, one at each end. Overwrites val and tmp.
+template <class T, class Op>
+void window_spans(T* val, T* tmp, int n, int w, int S, int* out, Op op) {
+  int L = 1, len = n;  // val[p], p < len, is the extreme over p .. p + L - 1
+  while (2 * L <= w) {
+    len -= L;
+    for (int p = 0; p < len; ++p) tmp[p] = op(val[p], val[p + L]);
+    std::swap(val, tmp);
+    L *= 2;
+  }
+  for (int s = 0; s < S; ++s) out[s] = op(val[s], val[s + w - L]);
+}
+
 void LayerSim::window_extreme(const std::vector<int>& v, int m, bool max, std::vector<int>& out) {
-  // Extreme of v over s-m .. s+m (circular) for every s, by the van Herk /
-  // Gil-Werman block method: O(S) whatever m.
+  // Extreme of v over s-m .. s+m (circular) for every s, by doubling spans
+  // (window_spans(); O(S log m), loops the compiler vectorises). Column
+  // heights fit 16 bits, which the vector instructions take 8 at a time.
   const int S = static_cast<int>(v.size());
   m = std::min(m, (S - 1) / 2);
   const int w = 2 * m + 1;
   const int n = S + 2 * m;  // unrolled: position p holds slot (p - m) mod S
-  win_pre_.resize(n);
-  win_suf_.resize(n);
-  win_val_.resize(n);
   out.resize(S);
-  // the minimum is minus the maximum of -v
+  win16_val_.resize(n);
+  win16_tmp_.resize(n);
+  std::int16_t* val16 = win16_val_.data();
+  const int* vp = v.data();
+  unsigned wide = 0;  // nonzero if a value does not fit 16 bits
+  for (int i = 0; i < S; ++i) {
+    val16[m + i] = static_cast<std::int16_t>(vp[i]);
+    wide |= (static_cast<unsigned>(vp[i]) + 32768u) >> 16;
+  }
+  if (wide == 0) {
+    std::int16_t* val = val16;
+    std::copy(val + S, val + S + m, val);          // slots S - m .. S - 1
+    std::copy(val + m, val + 2 * m, val + m + S);  // slots 0 .. m - 1
+    if (max)
+      window_spans(val, win16_tmp_.data(), n, w, S, out.data(), [](std::int16_t a, std::int16_t b) { return std::max(a, b); });
+    else
+      window_spans(val, win16_tmp_.data(), n, w, S, out.data(), [](std::int16_t a, std::int16_t b) { return std::min(a, b); });
+    return;
+  }
+  win_pre_.resize(n);
+  win_val_.resize(n);
   int* val = win_val_.data();
-  int* pre = win_pre_.data();
-  int* suf = win_suf_.data();
-  if (max) {
-    std::copy(v.end() - m, v.end(), val);
-    std::copy(v.begin(), v.end(), val + m);
-    std::copy(v.begin(), v.begin() + m, val + m + S);
-  } else {
-    std::transform(v.end() - m, v.end(), val, std::negate<int>());
-    std::transform(v.begin(), v.end(), val + m, std::negate<int>());
-    std::transform(v.begin(), v.begin() + m, val + m + S, std::negate<int>());
-  }
-  for (int p0 = 0; p0 < n; p0 += w) {  // blocks [p0, p0 + w)
-    const int p1 = std::min(n, p0 + w);
-    int mx = val[p0];
-    pre[p0] = mx;
-    for (int p = p0 + 1; p < p1; ++p) pre[p] = mx = std::max(mx, val[p]);
-    mx = val[p1 - 1];
-    suf[p1 - 1] = mx;
-    for (int p = p1 - 2; p >= p0; --p) suf[p] = mx = std::max(mx, val[p]);
-  }
-  int* o = out.data();
+  std::copy(v.end() - m, v.end(), val);
+  std::copy(v.begin(), v.end(), val + m);
+  std::copy(v.begin(), v.begin() + m, val + m + S);
   if (max)
-    for (int s = 0; s < S; ++s) o[s] = std::max(suf[s], pre[s + w - 1]);  // window [s, s + w - 1] unrolled
+    window_spans(val, win_pre_.data(), n, w, S, out.data(), [](int a, int b) { return std::max(a, b); });
   else
-    for (int s = 0; s < S; ++s) o[s] = -std::max(suf[s], pre[s + w - 1]);
+    window_spans(val, win_pre_.data(), n, w, S, out.data(), [](int a, int b) { return std::min(a, b); });
 }
 
 double LayerSim::bed_clearance(double r, double theta, double tau) const {
@@ -1988,17 +2302,21 @@ double LayerSim::bed_clearance(double r, double theta, double tau) const {
   const double cell = r * l0.delta;
   double best = cell * (col_m_ - 0.5 - rot_slots);
   const int s = outer_slot(t_map_);
-  for (int q = 0; q <= col_m_; ++q) {
+  auto gap = [&](int i) { return (R_eff_ - std::min(n_open_, col_[i] + 2) * d_) - r; };
+  {
+    const double a = cell * std::max(0.0, 0 - 0.5 - rot_slots);
+    if (a >= best) return best;
+    best = std::min(best, std::max(gap(s), a));
+  }
+  // the columns q cells either side (the one against the rotation first)
+  int lo = s, hi = s;
+  for (int q = 1; q <= col_m_; ++q) {
     const double a = cell * std::max(0.0, q - 0.5 - rot_slots);
     if (a >= best) break;
-    for (int sgn : {-1, 1}) {
-      if (q == 0 && sgn > 0) break;
-      int i = s + sgn * q;
-      if (i < 0) i += S0;
-      else if (i >= S0) i -= S0;
-      const double g = (R_eff_ - std::min(n_open_, col_[i] + 2) * d_) - r;
-      best = std::min(best, std::max(g, a));
-    }
+    lo = lo == 0 ? S0 - 1 : lo - 1;
+    hi = hi == S0 - 1 ? 0 : hi + 1;
+    best = std::min(best, std::max(gap(lo), a));
+    best = std::min(best, std::max(gap(hi), a));
   }
   return best;
 }
@@ -2232,6 +2550,8 @@ ChargeResult LayerSim::run() {
   }
   colmap_b_.assign(n_open_, 0.0);
   supmap_b_.assign(n_open_, 0.0);
+  colmap_off_.assign(L_.size(), MapOffset());
+  supmap_off_.assign(L_.size(), MapOffset());
   col_dirty_.assign(L_[0].S, 0);
   col_dirty_list_.clear();
   sup_dirty_.assign(occ_.size(), 0);

@@ -12,10 +12,21 @@ namespace {
 
 using V = Eigen::Vector2d;
 constexpr double kTwoPi = 2.0 * kPi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double wrap_2pi(double a) {
   a = std::fmod(a, kTwoPi);
   return a < 0 ? a + kTwoPi : a;
+}
+
+/// std::remainder(x, 2 pi), without the libm call where |x| < 2 pi: x itself
+/// up to pi (at pi the tie goes to the even quotient 0), else x -+ 2 pi, which
+/// is exact there (Sterbenz) and so what std::remainder returns.
+inline double remainder_2pi(double x) {
+  const double ax = std::abs(x);
+  if (ax <= kPi) return x;
+  if (ax < kTwoPi) return x > 0 ? x - kTwoPi : x + kTwoPi;
+  return std::remainder(x, kTwoPi);
 }
 
 /// atan2 to about 1e-5 rad, enough to pick the bins to search.
@@ -31,49 +42,68 @@ inline double fast_atan2(double y, double x) {
   return y < 0 ? -r : r;
 }
 
+/// The capsule of radius a round segment AB, with the terms of
+/// capsule_entry() that do not depend on the ray.
+struct Capsule {
+  double ax, ay, bx, by;  // A, B
+  double abx, aby, l2;    // B - A, |B - A|^2
+  double nx, ny, an;      // unit normal of AB, A . n
+  double a2n, b2n, aa;    // |A|^2, |B|^2, a^2
+  double a;
+  Capsule(const V& A, const V& B, double a_) : ax(A.x()), ay(A.y()), bx(B.x()), by(B.y()), a(a_) {
+    abx = bx - ax;
+    aby = by - ay;
+    l2 = abx * abx + aby * aby;
+    nx = ny = an = 0;
+    if (l2 > 0) {
+      const double sl = std::sqrt(l2);
+      nx = -aby / sl;
+      ny = abx / sl;
+      an = ax * nx + ay * ny;
+    }
+    a2n = ax * ax + ay * ay;
+    b2n = bx * bx + by * by;
+    aa = a * a;
+  }
+};
+
 /// Radius at which the ray r u (r >= 0) first enters the capsule of radius a
 /// round segment AB; +inf if it does not. The origin must lie outside.
-inline __attribute__((always_inline)) double ray_capsule_entry(const V& u, const V& A, const V& B, double a) {
+/// (Scalar, each term in the order of the vector form it replaced, so the
+/// table is the same to the bit.)
+inline __attribute__((always_inline)) double capsule_entry(double ux, double uy, const Capsule& c) {
   double best = std::numeric_limits<double>::infinity();
-  const V ab = B - A;
-  const double l2 = ab.squaredNorm();
-  if (l2 > 0) {
-    const V n = V(-ab.y(), ab.x()) / std::sqrt(l2);
-    const double un = u.dot(n);
+  if (c.l2 > 0) {
+    const double un = ux * c.nx + uy * c.ny;
     if (std::abs(un) > 1e-14) {
       for (double side : {-1.0, 1.0}) {
-        const double r = (A.dot(n) + side * a) / un;
+        const double r = (c.an + side * c.a) / un;
         if (r <= 0 || r >= best) continue;
-        const double t = (r * u - A).dot(ab) / l2;
+        const double t = ((r * ux - c.ax) * c.abx + (r * uy - c.ay) * c.aby) / c.l2;
         if (t >= 0 && t <= 1) best = r;
       }
     }
   }
-  for (const V* c : {&A, &B}) {
-    const double uc = u.dot(*c);
-    const double disc = uc * uc - c->squaredNorm() + a * a;
-    if (disc < 0) continue;
-    const double r = uc - std::sqrt(disc);
-    if (r > 0 && r < best) best = r;
+  {
+    const double uc = ux * c.ax + uy * c.ay;
+    const double disc = uc * uc - c.a2n + c.aa;
+    if (disc >= 0) {
+      const double r = uc - std::sqrt(disc);
+      if (r > 0 && r < best) best = r;
+    }
+  }
+  {
+    const double uc = ux * c.bx + uy * c.by;
+    const double disc = uc * uc - c.b2n + c.aa;
+    if (disc >= 0) {
+      const double r = uc - std::sqrt(disc);
+      if (r > 0 && r < best) best = r;
+    }
   }
   return best;
 }
 
 }  // namespace
-
-int LinerRideTable::bin(double psi) const {
-  int b = static_cast<int>(std::floor(psi * inv_bin));
-  b %= n_bins;
-  return b < 0 ? b + n_bins : b;
-}
-
-int LinerRideTable::contact(double psi) const {
-  // nearest ray: floor(x + 1/2) without the libm call; the count of rays is
-  // a power of two, so the mask wraps negative ones too
-  const double x = psi * inv_contact_ray + 0.5;
-  const int j = static_cast<int>(x) - (x < static_cast<int>(x));
-  return contact_element[static_cast<size_t>(j & (static_cast<int>(contact_element.size()) - 1))];
-}
 
 double load_contact_spacing_m(const LinerSurface& s) {
   std::vector<double> len(s.length.begin(), s.length.end());
@@ -108,6 +138,7 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
   for (int e = 0; e < s.n_elements(); ++e) {
     const V& A = s.nodes[e];
     const V& B = s.nodes[s.next(e)];
+    const Capsule cap(A, B, a);  // its own terms once for all its rays
     const double ra = A.norm(), rb = B.norm();
     const double rmin = std::max(1e-9, std::min(ra, rb) - a);
     const double widen = rmin > a ? std::asin(a / rmin) : kPi;
@@ -121,8 +152,7 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
     for (int k = 0; k <= nb; ++k) {
       int b = (b0 + k) % n;
       if (b < 0) b += n;
-      const V u(t.cos_e[b], t.sin_e[b]);
-      const double r = ray_capsule_entry(u, A, B, a);
+      const double r = capsule_entry(t.cos_e[b], t.sin_e[b], cap);
       if (r < t.edge_radius_m[b]) {
         t.edge_radius_m[b] = r;
         edge_element[b] = e;
@@ -168,7 +198,7 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
     double best = std::numeric_limits<double>::infinity();
     int be = none;
     for (int i = 0, e = first; i < count; ++i, e = e + 1 == ne ? 0 : e + 1) {
-      const double r = ray_capsule_entry(u, s.nodes[e], s.nodes[s.next(e)], a);
+      const double r = capsule_entry(u.x(), u.y(), Capsule(s.nodes[e], s.nodes[s.next(e)], a));
       if (r < best) {
         best = r;
         be = e;
@@ -236,7 +266,7 @@ bool first_ride_crossing(const LinerRideTable& t, double rot, const V& p0, const
   const V pa = p0 + v0 * ta + 0.5 * acc * ta * ta;
   const V pb = p0 + v0 * tb + 0.5 * acc * tb * tb;
   const double psa = fast_atan2(pa.y(), pa.x()) - rot, psb = fast_atan2(pb.y(), pb.x()) - rot;
-  double d = std::remainder(psb - psa, kTwoPi);
+  double d = remainder_2pi(psb - psa);
   // the polar angle of a parabola arc can turn by more than the chord says
   // when it passes close to the axis; such arcs are far from the liner, and
   // the caller only asks near it.
@@ -246,7 +276,9 @@ bool first_ride_crossing(const LinerRideTable& t, double rot, const V& p0, const
   if (lw < 0 || lw >= kTwoPi) lw = wrap_2pi(lw);
   const int b0 = static_cast<int>(lw * t.inv_bin) - 1;
   const int nb = static_cast<int>(std::ceil(std::abs(d) * t.inv_bin)) + 3;
-  const double c = std::cos(rot), s = std::sin(rot);
+  // (the layer model passes the path in the liner frame: rot = 0, no rotation)
+  const bool turned = rot != 0;
+  const double c = turned ? std::cos(rot) : 1.0, s = turned ? std::sin(rot) : 0.0;
   // quick reject: the arc stays inside the smallest ride radius of the bins it spans
   {
     const double rmax2 = std::max(pa.squaredNorm(), pb.squaredNorm());
@@ -266,13 +298,21 @@ bool first_ride_crossing(const LinerRideTable& t, double rot, const V& p0, const
   }
   bool found = false;
   double best = tb;
+  // ride point at edge b in the fixed frame; the rotation by 0 returns a point
+  // unchanged where its radius is positive and finite (no coordinate is -0 or
+  // infinite)
+  auto placed = [&](int b) {
+    const V q = t.point(b);
+    const double r = t.edge_radius_m[b];
+    return !turned && r > 0 && r < kInf ? q : V(c * q.x() - s * q.y(), s * q.x() + c * q.y());
+  };
+  int b = b0 % t.n_bins;
+  if (b < 0) b += t.n_bins;
+  V q2 = placed(b);
   for (int k = 0; k <= nb; ++k) {
-    int b = (b0 + k) % t.n_bins;
-    if (b < 0) b += t.n_bins;
     const int b1 = b + 1 == t.n_bins ? 0 : b + 1;
-    const V q1l = t.point(b), q2l = t.point(b1);
-    const V q1(c * q1l.x() - s * q1l.y(), s * q1l.x() + c * q1l.y());
-    const V q2(c * q2l.x() - s * q2l.y(), s * q2l.x() + c * q2l.y());
+    const V q1 = q2;  // edge b: the previous segment's end
+    q2 = placed(b1);
     const V e = q2 - q1;
     const V m(-e.y(), e.x());  // points into the mill (polyline runs anticlockwise)
     // f(t) = (p(t) - q1) . m: > 0 inside, crossing outward where f falls through 0.
@@ -303,6 +343,7 @@ bool first_ride_crossing(const LinerRideTable& t, double rot, const V& p0, const
       bin_hit = b;
       found = true;
     }
+    b = b1;
   }
   if (found) t_hit = best;
   return found;

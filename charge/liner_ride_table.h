@@ -48,12 +48,24 @@ struct LinerRideTable {
   std::vector<Eigen::Vector2d> ride_normal;  // per bin: unit normal of the ride polyline from edge b to b + 1,
                                              // into the mill (the direction a disc riding there is pushed)
 
-  /// Bin of angle psi [rad] (any value).
-  int bin(double psi) const;
+  /// Bin of angle psi [rad] (any value). Inline, and floor(x) without the
+  /// libm call: the flights and the liner loads ask for bins all the time.
+  /// The count of bins is a power of two, so the mask wraps negative ones too.
+  int bin(double psi) const {
+    const double x = psi * inv_bin;
+    const int b = static_cast<int>(x) - (x < static_cast<int>(x));
+    return b & (n_bins - 1);
+  }
   double ride(double psi) const { return ride_radius_m[bin(psi)]; }
   int support(double psi) const { return support_element[bin(psi)]; }
   /// Element the disc touches at the contact ray nearest psi [rad] (any value).
-  int contact(double psi) const;
+  int contact(double psi) const {
+    // nearest ray: floor(x + 1/2) without the libm call; the count of rays is
+    // a power of two, so the mask wraps negative ones too
+    const double x = psi * inv_contact_ray + 0.5;
+    const int j = static_cast<int>(x) - (x < static_cast<int>(x));
+    return contact_element[static_cast<size_t>(j & (static_cast<int>(contact_element.size()) - 1))];
+  }
   /// Arc [m] along the shell between contact rays.
   double contact_spacing_m(double shell_radius_m) const { return shell_radius_m * bin_rad / contact_rays_per_bin; }
   /// Ride point at edge b (liner frame) [m].

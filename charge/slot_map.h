@@ -61,11 +61,11 @@ class SlotMap {
     if (!(std::abs(D) < 0.5)) return false;
     if (D == 0) return true;
     // frac(b0 + s ratio) = frac(fb + frac(s ratio)) must lie in [lo, lo + len) (mod 1)
-    const double fb = b0 - std::floor(b0);
+    const double fb = b0 - floor_d(b0);
     const double lo = D > 0 ? 1.0 - D - kEps : -kEps;
     const double len = std::abs(D) + 2 * kEps;
     double a = lo - fb;  // the same interval for frac(s ratio)
-    a -= std::floor(a);
+    a -= floor_d(a);
     visit(a, std::min(1.0, a + len), f);
     if (a + len > 1.0) visit(0.0, a + len - 1.0, f);
     return true;
@@ -78,19 +78,44 @@ class SlotMap {
   /// k + 2 S_b.
   template <class F>
   void over(int k, double b, F&& f) const {
+    const int last = S_a_ - 1;
     for (int K : {k, k + S_b_, k + 2 * S_b_}) {
-      const int lo = static_cast<int>(std::ceil((K - b) / ratio_)) - 1;
-      const int hi = static_cast<int>(std::floor((K + 1 - b) / ratio_)) + 1;
-      for (int s = std::max(lo, 0); s <= std::min(hi, S_a_ - 1); ++s) f(s);
+      const int lo = ceil_int((K - b) / ratio_) - 1;
+      if (lo > last) break;  // lo grows with K: no later K reaches a cell either
+      const int hi = floor_int((K + 1 - b) / ratio_) + 1;
+      for (int s = std::max(lo, 0); s <= std::min(hi, last); ++s) f(s);
     }
   }
 
  private:
+  /// ceil(x) and floor(x) for |x| < 2^31 without the libm call (the same values).
+  static int ceil_int(double x) {
+    const int t = static_cast<int>(x);
+    return static_cast<double>(t) < x ? t + 1 : t;
+  }
+  static int floor_int(double x) {
+    const int t = static_cast<int>(x);
+    return static_cast<double>(t) > x ? t - 1 : t;
+  }
+  static double floor_d(double x) {  // |x| < 2^62
+    const double t = static_cast<double>(static_cast<long long>(x));
+    return t > x ? t - 1.0 : t;
+  }
+
   template <class F>
   void visit(double x0, double x1, F&& f) const {
-    auto i = std::lower_bound(frac_.begin(), frac_.end(), x0) - frac_.begin();
-    const auto n = static_cast<long>(frac_.size());
-    for (; i < n && frac_[i] < x1; ++i) f(order_[i]);
+    // local pointers: f() may store anywhere, and the vectors' data would be
+    // reloaded on every cell otherwise
+    const double* fr = frac_.data();
+    const int* ord = order_.data();
+    const long n = static_cast<long>(frac_.size());
+    // lower bound of x0: the fractional parts are spread evenly over [0, 1)
+    // (those of s S_b / S_a), so x0 n is within a few places of it; the two
+    // scans end on the first place not below x0 from wherever they start
+    long i = std::min(n, std::max(0L, static_cast<long>(x0 * static_cast<double>(n))));
+    while (i > 0 && fr[i - 1] >= x0) --i;
+    while (i < n && fr[i] < x0) ++i;
+    for (; i < n && fr[i] < x1; ++i) f(ord[i]);
   }
 
   int S_a_ = 0, S_b_ = 0;
