@@ -23,12 +23,6 @@ double positive_quantile(std::vector<double> v, double q) {
   return v[k];
 }
 
-/// floor(x) as an integer, |x| < 2^62, without the libm call (the same value).
-inline long long floor_ll(double x) {
-  const long long t = static_cast<long long>(x);
-  return static_cast<double>(t) > x ? t - 1 : t;
-}
-
 }  // namespace
 
 ChargeOccupancy::ChargeOccupancy(double R, double d, double sense) : R_(R), d_(d), sense_(sense) {

@@ -15,6 +15,8 @@
 
 #include <Eigen/Core>
 
+#include "charge/exact_math.h"
+
 namespace linerlife {
 
 struct OccupancyIndicators {
@@ -79,8 +81,7 @@ class ChargeOccupancy {
   /// Angular bin of ring j holding angle theta [rad] (inline, floor without
   /// the libm call: sample() asks for one per flight).
   int angular_bin(int j, double theta_rad) const {
-    const double x = theta_rad * inv_dth_[j];
-    int i = static_cast<int>(x) - (x < static_cast<int>(x));
+    int i = floor_int(theta_rad * inv_dth_[j]);
     const int n = nt_[j];
     if (i >= 0 && i < n) return i;
     i %= n;

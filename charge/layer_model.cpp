@@ -17,6 +17,7 @@
 
 #include "charge/canonical_surface.h"
 #include "charge/charge_occupancy.h"
+#include "charge/exact_math.h"
 #include "charge/lifter_launch.h"
 #include "charge/liner_ride_table.h"
 #include "charge/morrell_c_model.h"
@@ -39,15 +40,9 @@ constexpr double kPocketFaceDeg = 80.0;
 
 constexpr double kInvTwoPi = 1.0 / kTwoPi;
 
-/// floor for |x| < 2^62 without a libm call (truncation is one SSE2 instruction).
-inline double fast_floor(double x) {
-  const double t = static_cast<double>(static_cast<long long>(x));
-  return t > x ? t - 1.0 : t;
-}
-
 inline double wrap2pi(double a) {
   if (a >= 0 && a < kTwoPi) return a;
-  return a - kTwoPi * fast_floor(a * kInvTwoPi);
+  return a - kTwoPi * floor_exact(a * kInvTwoPi);
 }
 
 /// std::nextafter(x, +inf) without the libm call: the next
@@ -1169,22 +1164,6 @@ int LayerSim::pocket_lifter(int j, int seg, double psi) const {
   return off * L_[j].r < foot + pocket_balls_ * d_ ? k : -1;
 }
 
-/// ceil for |x| < 2^62 without a libm call (as fast_floor()).
-inline double fast_ceil(double x) {
-  const double t = static_cast<double>(static_cast<long long>(x));
-  return t < x ? t + 1.0 : t;
-}
-
-/// std::remainder(x, 2 pi), without the libm call where |x| < 2 pi: x itself
-/// up to pi (at pi the tie goes to the even quotient 0), else x -+ 2 pi, which
-/// is exact there (Sterbenz) and so what std::remainder returns.
-inline double remainder_2pi(double x) {
-  const double ax = std::abs(x);
-  if (ax <= kPi) return x;
-  if (ax < kTwoPi) return x > 0 ? x - kTwoPi : x + kTwoPi;
-  return std::remainder(x, kTwoPi);
-}
-
 void LayerSim::departures(double t0, double t1) {
   dep_events_.clear();
   const double dt = t1 - t0;
@@ -1197,8 +1176,8 @@ void LayerSim::departures(double t0, double t1) {
       const double lo = std::min(l.rel_min, l.release), hi = std::max(l.rel_max, std::isfinite(l.release) ? l.release : -kInf);
       if (!std::isfinite(lo)) continue;
       const double u = wrap2pi(lo - l.phase);
-      const int s_lo = static_cast<int>(fast_ceil((u - 2 * wdt) * l.inv_delta));
-      const int s_hi = static_cast<int>(fast_ceil((u + (hi - lo)) * l.inv_delta));
+      const int s_lo = static_cast<int>(ceil_exact((u - 2 * wdt) * l.inv_delta));
+      const int s_hi = static_cast<int>(ceil_exact((u + (hi - lo)) * l.inv_delta));
       for (int s = s_lo; s <= s_hi; ++s) {
         int si = s % l.S;
         if (si < 0) si += l.S;
@@ -1220,8 +1199,8 @@ void LayerSim::departures(double t0, double t1) {
       // slots crossing the flight angle in this step, or in the previous one
       // after its scan (placed there by a landing): w in (-wdt, wdt]
       const double u = wrap2pi(l.release - l.phase);
-      const int s_lo = static_cast<int>(fast_ceil((u - wdt) * l.inv_delta));
-      const int s_hi = static_cast<int>(fast_ceil((u + wdt) * l.inv_delta)) - 1;
+      const int s_lo = static_cast<int>(ceil_exact((u - wdt) * l.inv_delta));
+      const int s_hi = static_cast<int>(ceil_exact((u + wdt) * l.inv_delta)) - 1;
       for (int s = s_lo; s <= s_hi; ++s) {
         int si = s % l.S;
         if (si < 0) si += l.S;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "charge/exact_math.h"
 #include "geometry/errors.h"
 #include "geometry/mill.h"
 
@@ -17,16 +18,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 double wrap_2pi(double a) {
   a = std::fmod(a, kTwoPi);
   return a < 0 ? a + kTwoPi : a;
-}
-
-/// std::remainder(x, 2 pi), without the libm call where |x| < 2 pi: x itself
-/// up to pi (at pi the tie goes to the even quotient 0), else x -+ 2 pi, which
-/// is exact there (Sterbenz) and so what std::remainder returns.
-inline double remainder_2pi(double x) {
-  const double ax = std::abs(x);
-  if (ax <= kPi) return x;
-  if (ax < kTwoPi) return x > 0 ? x - kTwoPi : x + kTwoPi;
-  return std::remainder(x, kTwoPi);
 }
 
 /// atan2 to about 1e-5 rad, enough to pick the bins to search.

@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 
+#include "charge/exact_math.h"
 #include "geometry/liner_surface.h"
 
 namespace linerlife {
@@ -52,9 +53,7 @@ struct LinerRideTable {
   /// libm call: the flights and the liner loads ask for bins all the time.
   /// The count of bins is a power of two, so the mask wraps negative ones too.
   int bin(double psi) const {
-    const double x = psi * inv_bin;
-    const int b = static_cast<int>(x) - (x < static_cast<int>(x));
-    return b & (n_bins - 1);
+    return floor_int(psi * inv_bin) & (n_bins - 1);
   }
   double ride(double psi) const { return ride_radius_m[bin(psi)]; }
   int support(double psi) const { return support_element[bin(psi)]; }
@@ -62,8 +61,7 @@ struct LinerRideTable {
   int contact(double psi) const {
     // nearest ray: floor(x + 1/2) without the libm call; the count of rays is
     // a power of two, so the mask wraps negative ones too
-    const double x = psi * inv_contact_ray + 0.5;
-    const int j = static_cast<int>(x) - (x < static_cast<int>(x));
+    const int j = floor_int(psi * inv_contact_ray + 0.5);
     return contact_element[static_cast<size_t>(j & (static_cast<int>(contact_element.size()) - 1))];
   }
   /// Arc [m] along the shell between contact rays.

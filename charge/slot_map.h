@@ -19,6 +19,8 @@
 #include <numeric>
 #include <vector>
 
+#include "charge/exact_math.h"
+
 namespace linerlife {
 
 class SlotMap {
@@ -61,11 +63,11 @@ class SlotMap {
     if (!(std::abs(D) < 0.5)) return false;
     if (D == 0) return true;
     // frac(b0 + s ratio) = frac(fb + frac(s ratio)) must lie in [lo, lo + len) (mod 1)
-    const double fb = b0 - floor_d(b0);
+    const double fb = b0 - floor_exact(b0);
     const double lo = D > 0 ? 1.0 - D - kEps : -kEps;
     const double len = std::abs(D) + 2 * kEps;
     double a = lo - fb;  // the same interval for frac(s ratio)
-    a -= floor_d(a);
+    a -= floor_exact(a);
     visit(a, std::min(1.0, a + len), f);
     if (a + len > 1.0) visit(0.0, a + len - 1.0, f);
     return true;
@@ -88,20 +90,6 @@ class SlotMap {
   }
 
  private:
-  /// ceil(x) and floor(x) for |x| < 2^31 without the libm call (the same values).
-  static int ceil_int(double x) {
-    const int t = static_cast<int>(x);
-    return static_cast<double>(t) < x ? t + 1 : t;
-  }
-  static int floor_int(double x) {
-    const int t = static_cast<int>(x);
-    return static_cast<double>(t) > x ? t - 1 : t;
-  }
-  static double floor_d(double x) {  // |x| < 2^62
-    const double t = static_cast<double>(static_cast<long long>(x));
-    return t > x ? t - 1.0 : t;
-  }
-
   template <class F>
   void visit(double x0, double x1, F&& f) const {
     // local pointers: f() may store anywhere, and the vectors' data would be
