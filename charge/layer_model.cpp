@@ -1923,20 +1923,20 @@ void LayerSim::relax_candidates(double tau) {
     if (arc_start >= S0) arc_start -= S0;
     arc_len = std::min(S0, static_cast<int>(std::ceil((kPi - 2.0 * as + 2.0 * l0.delta) * l0.inv_delta)) + 2);
   }
-  for (int s = 0; s < S0; ++s) {
+  auto test = [&](int s) {
     const int h = col[s];
-    if (h == 0) continue;
+    if (h == 0) return;
     if (cmin[s] >= n) {
       int u = s - arc_start;
       if (u < 0) u += S0;
-      if (u >= arc_len) continue;
+      if (u >= arc_len) return;
       // the first look, from the direction of the column's centre
       const double c = dc * cs[s] - ds * ss[s];
-      if (!(c > -tol_full)) continue;
+      if (!(c > -tol_full)) return;
       const double sn = ds * cs[s] + dc * ss[s];
-      if (!(sn > past_sn_full)) continue;
+      if (!(sn > past_sn_full)) return;
       if (relax_candidate_exact(s, h, n, tau)) bits[s >> 6] |= std::uint64_t{1} << (s & 63);
-      continue;
+      return;
     }
     const int k = h - 1;
     const int h_min = cmin[s];  // < n
@@ -1947,8 +1947,30 @@ void LayerSim::relax_candidates(double tau) {
     const bool past = c > -tol && sn > relax_past_sn_[k];
     const bool overhang = k > 0 && unheld && (h_min < h || (sn > relax_ovh_sn_[k] && h < n));
     const bool repose = unheld && c < tol;  // h_min < n
-    if (!past && !overhang && !repose) continue;
+    if (!past && !overhang && !repose) return;
     if (relax_candidate_exact(s, h, h_min, tau)) bits[s >> 6] |= std::uint64_t{1} << (s & 63);
+  };
+  // Most cells are passed over by test() at once: the empty columns, and
+  // the full ones (h_min = n_open) outside the arc. Outside the arc they are
+  // passed over a block of B cells at a time (the flags of a block in one
+  // loop without branches, which the compiler vectorises); the cells of the
+  // other blocks, and of those that meet the arc, are tested one by one.
+  // The order does not matter: a test sets its own bit only.
+  constexpr int B = 16;
+  for (int p = 0; p < S0; p += B) {
+    const int e = std::min(p + B, S0);
+    // some column not empty; some column neither empty nor with a full
+    // window (cmin - n < 0: its sign bit, spread over the word by the shift)
+    int any = 0, open = 0;
+    for (int s = p; s < e; ++s) {
+      any |= col[s];
+      open |= col[s] & ((cmin[s] - n) >> 31);
+    }
+    if (any == 0) continue;
+    int u = p - arc_start;
+    if (u < 0) u += S0;
+    if (open == 0 && (arc_len == 0 || (u >= arc_len && u + (e - p) <= S0))) continue;  // no cell in the arc
+    for (int s = p; s < e; ++s) test(s);
   }
 }
 
