@@ -292,6 +292,10 @@ class LayerSim {
     const double ph = l0.phase + l0.omega * (t_map_ - t_step0_);
     int s0 = static_cast<int>(wrap2pi(theta - ph + 0.5 * l0.delta) * l0.inv_delta);
     if (s0 >= l0.S) s0 -= l0.S;
+    return ncol_from(s0, theta, tau, below, at);
+  }
+  /// ncol_at() once the outer cell s0 of the column map at theta is known.
+  int ncol_from(int s0, double theta, double tau, int& below, int& at) const {
     int h = std::min(col_[s0], n_open_);
     below = at = -1;
     while (h < n_open_) {
@@ -1796,6 +1800,7 @@ void LayerSim::relax_surface(double tau) {
     bits_set(relax_cur_, std::max(lo, 0), std::min(hi, S0 - 1));
     bits_set(relax_next_, std::max(lo, 0), std::min(hi, S0 - 1));
   };
+  const bool map_now = t_map_ == tau && t_step0_ == tau;  // as run() calls it, after update_columns(tau)
   for (int pass = 0; pass < 6; ++pass) {
     int moved = 0;
     const bool up = pass % 2 == 0;
@@ -1807,7 +1812,10 @@ void LayerSim::relax_surface(double tau) {
       bool stable = false;
       for (int top = 0; top < 32; ++top) {
         int s, s_free;  // s = slot_of(h - 1, th, tau) where h > 0
-        const int h = ncol_at(th, tau, s, s_free);
+        // ncol_at(th, tau): with the map at tau (map_now) the centre of outer
+        // cell s0 is in cell s0 of the map (th - phase = s0 delta to a few
+        // ulps, far from the cell's edges), so the walks start there
+        const int h = map_now ? ncol_from(s0, th, tau, s, s_free) : ncol_at(th, tau, s, s_free);
         stable = true;
         if (h == 0) break;
         const int k = h - 1;
