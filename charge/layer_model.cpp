@@ -326,6 +326,9 @@ class LayerSim {
   /// may roll at tau, once the cheap first look of relax_candidates() let it
   /// through (h_min: the smallest column within relax_reach_, at most n_open).
   bool relax_candidate_exact(int s, int h, int h_min, double tau) const;
+  /// For relax_candidate_exact(): the top of the column above outer cell s
+  /// (h high) is (k, st) at (x, y) and cannot roll by the repose rule at tau.
+  bool repose_exact(int s, int h, int k, int st, double x, double y, double tau) const;
   /// Bit sets of outer cells (relax_cur_, relax_next_): sets bits lo .. hi;
   /// the first set bit at or after q (below n), the last at or before q; -1
   /// if none.
@@ -2028,13 +2031,26 @@ bool LayerSim::relax_candidate_exact(int s, int h, int h_min, double tau) const 
     // the widest cells). A little slack for the rounding of the rotation.
     const double sl = 0.5 * r_out * L_[n_open_ - 1].delta;
     const double cd = cos_delta_[k], sd = sin_delta_[k];
+    bool maybe = false;
     for (double dir : {-1.0, 1.0}) {
       const double cn = ct * cd - dir * stp * sd, snn = stp * cd + dir * ct * sd;
       const double y_low = std::min(r_out * snn, r_in * snn) - sl;
       const double x_a = std::min(r_out * cn, r_in * cn) - sl, x_b = std::max(r_out * cn, r_in * cn) + sl;
       const double run_min = x < x_a ? x_a - x : (x > x_b ? x - x_b : 0.0);
-      if (y_low < y + 1e-9 && y - y_low > tan_g_ * run_min - 1e-9) return true;
+      if (y_low < y + 1e-9 && y - y_low > tan_g_ * run_min - 1e-9) {
+        maybe = true;
+        break;
+      }
     }
+    // The bound lets most tops of a sloping surface through (the column
+    // h_min short may be anywhere within reach); roll_target()'s own repose
+    // test decides, on the neighbouring tops it will find (with the map at
+    // tau the visit's ncol_at() at the centre is ncol_from(s); a top other
+    // than (k, st) is left to the visit). Its neighbouring columns are walked
+    // here with the top in place, where roll_target() takes it out first:
+    // the walks never look at its cell (one cell of layer k to each side;
+    // with S_k >= 3 not the same cell).
+    if (maybe && (L_[k].S < 3 || !repose_exact(s, h, k, st, x, y, tau))) return true;
   }
   // an overhang. While sin(theta) <= 0.3 the point one diameter below the
   // top lies in the top's ring or outside it, where every column within
@@ -2047,6 +2063,30 @@ bool LayerSim::relax_candidate_exact(int s, int h, int h_min, double tau) const 
     if (!inside_charge(q, q.norm(), tau)) return true;
   }
   return false;
+}
+
+bool LayerSim::repose_exact(int s, int h, int k, int st, double x, double y, double tau) const {
+  // The top the visit will find: relax_surface()'s ncol_from(s) with the map
+  // at tau starts at col_[s] = h <= n_open and walks no further if (k, st)
+  // is occupied and the cell above it is not (then it is (k, st)).
+  if (!(t_map_ == tau && t_step0_ == tau) || occ(k, st) < 0) return false;
+  if (h < n_open_ && occ(h, slot_of(h, slot_angle(0, s, tau), tau)) >= 0) return false;
+  // roll_target()'s repose rule on it (past is false), the same values
+  const double th = slot_angle(k, st, tau);
+  for (double dir : {-1.0, 1.0}) {
+    const double thn = th + dir * L_[k].delta;
+    int sbn, sn;
+    const int kn = ncol_at(thn, tau, sbn, sn);
+    if (kn >= n_open_) continue;
+    if (kn == 0 && k == 0) continue;
+    if (kn == k && sn == st) continue;
+    double cn, snn;
+    slot_dir(kn, sn, tau, cn, snn);
+    const double xn = L_[kn].r * cn, yn = L_[kn].r * snn;
+    const double drop = y - yn, run = std::abs(x - xn);
+    if (drop > tan_g_ * run && yn < y) return false;
+  }
+  return true;
 }
 
 void LayerSim::check_departure(int j, int s, double tau) {
