@@ -385,6 +385,7 @@ class LayerSim {
   LinerMetrics metrics_;
   std::vector<SegmentMetrics> seg_;
   LinerRideTable ride_;
+  double ride_reject_ = 0;  // cos(h/2) (1 - 1e-7), h the bin; 0: no quick reject (see liner_crossing())
   double inv_d_ = 0;
   // d_: edge of an element (a cell of the lattice), element_size_diameters
   // media diameters (1: one ball); a_ = d_ / 2. d_ball_: the media diameter,
@@ -618,6 +619,12 @@ void LayerSim::setup_geometry() {
   ride_ = build_liner_ride_table(
       canon_.surface, a_, 4,
       in_.model.load_contact_spacing_m > 0 ? in_.model.load_contact_spacing_m : load_contact_spacing_m(canon_.surface));
+  {
+    // liner_crossing()'s quick reject needs every ride point finite
+    bool finite = true;
+    for (const double r : ride_.edge_radius_m) finite = finite && r > 0 && r < kInf;
+    ride_reject_ = finite ? std::cos(0.5 * ride_.bin_rad) * (1 - 1e-7) : 0.0;
+  }
   if (in_.model.pocket_loads) setup_pocket_loads();
   phi_ = in_.mill.speed_rpm / critical_speed_rpm(2 * R_eff_);
   const ChargeSpec& c = in_.charge;
@@ -1233,10 +1240,42 @@ bool LayerSim::liner_crossing(const V& pa, const V& va, const V& acc, double tau
   // (docs/models/layer.md §Impacts).
   const V u = va - omega_ * V(-pa.y(), pa.x());                                  // relative velocity
   const V arel = acc - 2.0 * omega_ * V(-u.y(), u.x()) + omega_ * omega_ * pa;   // relative acceleration
-  const double rot = mill_angle(tau), c = std::cos(rot), sn = std::sin(rot);
+  const double rot = mill_angle(tau);
+  // Quick reject before the rotation (a sincos) and the search: the
+  // parabola over (tau, tb] stays within max(|p(0)|, |p(h)|) + |arel| h^2 / 8
+  // of the axis (its chord, plus the largest gap to it); the ride polyline
+  // between edges b and b + 1 stays beyond ride_radius_m[b] cos(h_bin / 2)
+  // (the chord of the smaller edge). Where the first lies inside the second
+  // over every bin the search can visit (its range from the same angles,
+  // each within 2e-5 rad of the search's fast_atan2 of the rotated points,
+  // widened by two bins each side), no root the search accepts exists: an
+  // accepted root lies on its segment to about 1e-14 R (the quadratic's
+  // residual), far within the 1e-7 of ride_reject_. So the result is the same;
+  // and where the search runs, it skips the bins beyond the bound (reach).
+  double reach = kInf;
+  if (ride_reject_ > 0) {
+    const double h = tb - tau;
+    const V ph(pa.x() + u.x() * h + 0.5 * arel.x() * h * h, pa.y() + u.y() * h + 0.5 * arel.y() * h * h);
+    const double rr = std::sqrt(std::max(pa.squaredNorm(), ph.squaredNorm())) +
+                      0.125 * (std::abs(arel.x()) + std::abs(arel.y())) * h * h;
+    const double lim = rr / ride_reject_;  // a bin whose ride radius exceeds it is not reached
+    if (lim < ride_.min_ride_m) return false;
+    reach = lim;  // the search skips the bins beyond it (whatever the range)
+    const double psa = fast_atan2(pa.y(), pa.x()) - rot, psb = fast_atan2(ph.y(), ph.x()) - rot;
+    const double d = remainder_2pi(psb - psa);
+    if (std::abs(d) < 0.5) {
+      const int mask = ride_.n_bins - 1;
+      const int first = floor_int((d >= 0 ? psa : psa + d) * ride_.inv_bin) - 3;
+      const int count = ceil_int(std::abs(d) * ride_.inv_bin) + 9;
+      int k = 0;
+      while (k < count && ride_.ride_radius_m[(first + k) & mask] > lim) ++k;
+      if (k == count) return false;
+    }
+  }
+  const double c = std::cos(rot), sn = std::sin(rot);
   auto to_liner = [&](const V& x) { return V(c * x.x() + sn * x.y(), -sn * x.x() + c * x.y()); };
   double th;
-  if (!first_ride_crossing(ride_, 0.0, to_liner(pa), to_liner(u), to_liner(arel), 0.0, tb - tau, th, bin)) return false;
+  if (!first_ride_crossing(ride_, 0.0, to_liner(pa), to_liner(u), to_liner(arel), 0.0, tb - tau, th, bin, reach)) return false;
   t_hit = tau + th;
   return true;
 }
