@@ -139,7 +139,7 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
   // rounding of the angles):
   //  1. the rays with j <= 0 (inside the arc or within a bin of it: the
   //     element straight ahead and its neighbours, usually the smallest),
-  //     computed for every element;
+  //     for every element in order, with the bound of 2. at delta = 0;
   //  2. the rays with j >= 1: a ray at angle delta (< pi/2) from every point
   //     of a segment at distance >= rho (> a') from the axis can only meet
   //     the capsule of radius a' round it at a radius of at least
@@ -165,6 +165,8 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
   };
   std::vector<Reach> reach;
   reach.reserve(ne_all);
+  const double tol = 1e-6 * (R + a);  // [m] see a' above
+  const double a1 = a + tol;
   auto offer = [&](int b, int e, double r) {
     if (r < t.edge_radius_m[b] || (r == t.edge_radius_m[b] && e < edge_element[b])) {
       t.edge_radius_m[b] = r;
@@ -189,17 +191,23 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
     const double rho = V(A.x() + tc * cap.abx, A.y() + tc * cap.aby).norm() * (1 - 1e-12);
     const Reach rc{cap, rho, b0, b0 + nb, floor_int(lo_e * t.inv_bin - 1e-6),
                    ceil_int((lo_e + std::abs(dp)) * t.inv_bin + 1e-6)};
-    // 1. j <= 0
+    // 1. j <= 0, with the bound at delta = 0, rho - a' (in a pocket the
+    // lifter before it may have ruled out the plate)
+    const double bound0 = rho > a1 ? rho - a1 - tol : -kInf;
     for (int q = std::max(b0, rc.JL), q1 = std::min(rc.b1, rc.JR); q <= q1; ++q) {
       const int b = q & mask;
-      offer(b, e, capsule_entry(t.cos_e[b], t.sin_e[b], cap));
+      const double ux = t.cos_e[b], uy = t.sin_e[b];
+      if (bound0 > t.edge_radius_m[b]) {
+        const double un = std::abs(ux * cap.nx + uy * cap.ny);
+        if (!(un > 1e-14 && un < 1e-6)) continue;
+      }
+      offer(b, e, capsule_entry(ux, uy, cap));
     }
     reach.push_back(rc);
   }
   // 2. j >= 1, where the bound does not rule it out. The bound depends on j
   // only: one per j and element (bound[j]).
-  const double tol = 1e-6 * (R + a);
-  const double a1 = a + tol, a12 = a1 * a1;
+  const double a12 = a1 * a1;
   std::vector<double> bound;
   for (int e = 0; e < ne_all; ++e) {
     const Reach& rc = reach[e];
@@ -285,7 +293,7 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
     double best = std::numeric_limits<double>::infinity();
     int be = none;
     for (int i = 0, e = first; i < count; ++i, e = e + 1 == ne ? 0 : e + 1) {
-      const double r = capsule_entry(u.x(), u.y(), Capsule(s.nodes[e], s.nodes[s.next(e)], a));
+      const double r = capsule_entry(u.x(), u.y(), reach[e].cap);  // (Capsule(nodes e, e + 1, a), made once)
       if (r < best) {
         best = r;
         be = e;
