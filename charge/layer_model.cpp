@@ -501,6 +501,11 @@ class LayerSim {
   bool col_full_ = true, sup_full_ = true;  // the next map / sweep is a full one
   bool incremental_ = true;                 // false: every map, sweep and relaxation pass is a full one (tests)
   std::vector<char> col_dirty_;             // per outer slot
+  // occupancy bits of the open layers (bit s of layer j: occ(j, s) >= 0),
+  // kept by note_cell() from the start of the run: update_columns() finds
+  // the few places where a layer's occupancy changes from them
+  std::vector<std::uint64_t> occ_bits_;
+  std::vector<int> occ_bits_off_;           // [j] first word of layer j
   std::vector<int> col_dirty_list_;
   std::vector<char> sup_dirty_;             // per slot (occ_ indexing)
   std::vector<std::vector<int>> sup_dirty_list_;  // [layer] slots to check
@@ -2109,6 +2114,11 @@ void LayerSim::support_sweep(double tau) {
 
 void LayerSim::note_cell(int j, int k, double tau, bool entered) {
   if (!maps_ready_) return;
+  {
+    std::uint64_t& w = occ_bits_[occ_bits_off_[j] + (k >> 6)];
+    const std::uint64_t bit = std::uint64_t{1} << (k & 63);
+    w = entered ? w | bit : w & ~bit;
+  }
   if (!col_full_) {
     // only columns that reach layer j (height >= j) see the change
     if (j == 0) mark_col(k);
@@ -2141,20 +2151,51 @@ void LayerSim::update_columns(double tau, bool window) {
   // A column of height h depends on its cells in layers 0 .. h only; one
   // whose cell in layer j <= h moved to a cell of the same occupancy keeps
   // its height (a change of occupancy of the old cell since the last map was
-  // noted by note_cell()).
+  // noted by note_cell()). A cell moves by at most one place while the
+  // offset moves by less than half a cell, so only the outer cells whose
+  // cell crosses a boundary of layer j's occupancy (an empty cell next to a
+  // full one; a few per layer, from occ_bits_) can change: those are found
+  // with SlotMap::across(), a superset of them checked as before (the
+  // columns of SlotMap::changed() until 2026-12-05, S_0 |D| cells a layer).
   for (int j = 1; j < n_open_ && !full; ++j) {
     const double D = (l0.omega - L_[j].omega) * (tau - t_map_) * L_[j].inv_delta;
+    if (!(std::abs(D) < 0.5)) {
+      full = true;  // as SlotMap::changed(): too far for the runs to be reliable
+      break;
+    }
     const SlotMap& map = colmap_[j];
     const double b0 = colmap_b_[j], b1 = colmap_offset(j, tau);
+    // the offset's change as b0 and b1 have it (wrap2pi may take b1 round
+    // by S_j), and D: the cells cross within the span of both
+    const int Sj = L_[j].S;
+    double d = b1 - b0;
+    if (d > 0.5 * Sj) d -= Sj;
+    else if (d < -0.5 * Sj) d += Sj;
+    if (D == 0 && d == 0) continue;
+    const double lo = std::min({0.0, D, d}), hi = std::max({0.0, D, d});
     const int* o = &occ_[L_[j].offset];
     // local pointers: mark_col() stores, and the compiler would reload the
     // vectors' data on every cell otherwise
     const int* col = col_.data();
     const char* dirty = col_dirty_.data();
-    full = !map.changed(b0, D, [&](int s) {
+    auto check = [&](int s) {
       if (j > col[s] || dirty[s]) return;
       if ((o[map.cell(s, b0)] >= 0) != (o[map.cell(s, b1)] >= 0)) mark_col(s);
-    });
+    };
+    // boundaries K of layer j: bit K differs from bit K - 1 (mod S_j)
+    const std::uint64_t* w = &occ_bits_[occ_bits_off_[j]];
+    const int nw = (Sj + 63) >> 6;
+    std::uint64_t carry = (w[(Sj - 1) >> 6] >> ((Sj - 1) & 63)) & 1;  // bit S_j - 1, before bit 0
+    for (int i = 0; i < nw; ++i) {
+      const std::uint64_t x = w[i];
+      std::uint64_t e = x ^ ((x << 1) | carry);
+      carry = x >> 63;
+      if (i == nw - 1 && (Sj & 63)) e &= (std::uint64_t{1} << (Sj & 63)) - 1;
+      while (e) {
+        map.across((i << 6) + __builtin_ctzll(e), b0, lo, hi, check);
+        e &= e - 1;
+      }
+    }
   }
   for (int j = 1; j < n_open_; ++j) colmap_b_[j] = colmap_offset(j, tau);
   if (full) {
@@ -2535,6 +2576,12 @@ ChargeResult LayerSim::run() {
   col_dirty_list_.clear();
   sup_dirty_.assign(occ_.size(), 0);
   sup_dirty_list_.assign(n_open_, {});
+  occ_bits_off_.assign(n_open_ + 1, 0);
+  for (int j = 0; j < n_open_; ++j) occ_bits_off_[j + 1] = occ_bits_off_[j] + (L_[j].S + 63) / 64;
+  occ_bits_.assign(occ_bits_off_[n_open_], 0);
+  for (int j = 0; j < n_open_; ++j)
+    for (int s = 0; s < L_[j].S; ++s)
+      if (occ(j, s) >= 0) occ_bits_[occ_bits_off_[j] + (s >> 6)] |= std::uint64_t{1} << (s & 63);
   incremental_ = in_.model.incremental_maps;
   col_full_ = sup_full_ = true;
   maps_ready_ = true;
