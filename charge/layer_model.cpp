@@ -505,7 +505,9 @@ class LayerSim {
   // kept by note_cell() from the start of the run: update_columns() finds
   // the few places where a layer's occupancy changes from them
   std::vector<std::uint64_t> occ_bits_;
+  std::vector<std::uint64_t> occ_bits_map_; // occ_bits_ at t_map_ (the cells changed since: the difference)
   std::vector<int> occ_bits_off_;           // [j] first word of layer j
+  std::vector<int> occ_bits_layer_;         // [word] its layer
   std::vector<int> col_dirty_list_;
   std::vector<char> sup_dirty_;             // per slot (occ_ indexing)
   std::vector<std::vector<int>> sup_dirty_list_;  // [layer] slots to check
@@ -2119,13 +2121,8 @@ void LayerSim::note_cell(int j, int k, double tau, bool entered) {
     const std::uint64_t bit = std::uint64_t{1} << (k & 63);
     w = entered ? w | bit : w & ~bit;
   }
-  if (!col_full_) {
-    // only columns that reach layer j (height >= j) see the change
-    if (j == 0) mark_col(k);
-    else colmap_[j].over(k, colmap_offset(j, tau), [&](int s) {
-      if (col_[s] >= j) mark_col(s);
-    });
-  }
+  // (the columns over the cells changed since the last map are marked by
+  // update_columns(), from occ_bits_map_)
   if (!sup_full_) {
     if (entered) {
       if (j >= 1) mark_sup(j, k);
@@ -2197,6 +2194,33 @@ void LayerSim::update_columns(double tau, bool window) {
       }
     }
   }
+  // The cells whose occupancy differs from the last map's (each once,
+  // however often it was entered and left since): the columns over them at
+  // b0 (exactly: SlotMap::over() gives a cell more each side) that reach
+  // their layer (height >= j). Marked by note_cell() on every move until
+  // 2026-12-05.
+  if (!full) {
+    const std::uint64_t *now = occ_bits_.data(), *then = occ_bits_map_.data();
+    const int* col = col_.data();
+    const int nw = static_cast<int>(occ_bits_.size());
+    for (int i = 0; i < nw; ++i) {
+      std::uint64_t e = now[i] ^ then[i];
+      if (!e) continue;  // most words: nothing changed
+      const int j = occ_bits_layer_[i];
+      const SlotMap& map = colmap_[j];
+      const double b0 = colmap_b_[j];
+      const int k0 = (i - occ_bits_off_[j]) << 6;
+      do {
+        const int k = k0 + __builtin_ctzll(e);
+        e &= e - 1;
+        if (j == 0) mark_col(k);
+        else map.over(k, b0, [&](int s) {
+          if (col[s] >= j && map.cell(s, b0) == k) mark_col(s);
+        });
+      } while (e);
+    }
+  }
+  occ_bits_map_ = occ_bits_;
   for (int j = 1; j < n_open_; ++j) colmap_b_[j] = colmap_offset(j, tau);
   if (full) {
     const int* o0 = &occ_[l0.offset];
@@ -2579,9 +2603,13 @@ ChargeResult LayerSim::run() {
   occ_bits_off_.assign(n_open_ + 1, 0);
   for (int j = 0; j < n_open_; ++j) occ_bits_off_[j + 1] = occ_bits_off_[j] + (L_[j].S + 63) / 64;
   occ_bits_.assign(occ_bits_off_[n_open_], 0);
+  occ_bits_layer_.resize(occ_bits_.size());
+  for (int j = 0; j < n_open_; ++j)
+    std::fill(occ_bits_layer_.begin() + occ_bits_off_[j], occ_bits_layer_.begin() + occ_bits_off_[j + 1], j);
   for (int j = 0; j < n_open_; ++j)
     for (int s = 0; s < L_[j].S; ++s)
       if (occ(j, s) >= 0) occ_bits_[occ_bits_off_[j] + (s >> 6)] |= std::uint64_t{1} << (s & 63);
+  occ_bits_map_ = occ_bits_;
   incremental_ = in_.model.incremental_maps;
   col_full_ = sup_full_ = true;
   maps_ready_ = true;
