@@ -508,6 +508,7 @@ class LayerSim {
   std::vector<std::uint64_t> occ_bits_map_; // occ_bits_ at t_map_ (the cells changed since: the difference)
   std::vector<int> occ_bits_off_;           // [j] first word of layer j
   std::vector<int> occ_bits_layer_;         // [word] its layer
+  std::vector<std::uint64_t> occ_words_changed_;  // bit i: word i of occ_bits_ changed since the last map
   std::vector<int> col_dirty_list_;
   std::vector<char> sup_dirty_;             // per slot (occ_ indexing)
   std::vector<std::vector<int>> sup_dirty_list_;  // [layer] slots to check
@@ -2117,9 +2118,11 @@ void LayerSim::support_sweep(double tau) {
 void LayerSim::note_cell(int j, int k, double tau, bool entered) {
   if (!maps_ready_) return;
   {
-    std::uint64_t& w = occ_bits_[occ_bits_off_[j] + (k >> 6)];
+    const int i = occ_bits_off_[j] + (k >> 6);
+    std::uint64_t& w = occ_bits_[i];
     const std::uint64_t bit = std::uint64_t{1} << (k & 63);
     w = entered ? w | bit : w & ~bit;
+    occ_words_changed_[i >> 6] |= std::uint64_t{1} << (i & 63);
   }
   // (the columns over the cells changed since the last map are marked by
   // update_columns(), from occ_bits_map_)
@@ -2202,25 +2205,32 @@ void LayerSim::update_columns(double tau, bool window) {
   if (!full) {
     const std::uint64_t *now = occ_bits_.data(), *then = occ_bits_map_.data();
     const int* col = col_.data();
-    const int nw = static_cast<int>(occ_bits_.size());
-    for (int i = 0; i < nw; ++i) {
-      std::uint64_t e = now[i] ^ then[i];
-      if (!e) continue;  // most words: nothing changed
-      const int j = occ_bits_layer_[i];
-      const SlotMap& map = colmap_[j];
-      const double b0 = colmap_b_[j];
-      const int k0 = (i - occ_bits_off_[j]) << 6;
-      do {
-        const int k = k0 + __builtin_ctzll(e);
-        e &= e - 1;
-        if (j == 0) mark_col(k);
-        else map.over(k, b0, [&](int s) {
-          if (col[s] >= j && map.cell(s, b0) == k) mark_col(s);
-        });
-      } while (e);
-    }
+    // the words written since the last map (note_cell())
+    for (size_t q = 0; q < occ_words_changed_.size(); ++q)
+      for (std::uint64_t m = occ_words_changed_[q]; m; m &= m - 1) {
+        const int i = static_cast<int>(q << 6) + __builtin_ctzll(m);
+        std::uint64_t e = now[i] ^ then[i];
+        if (!e) continue;  // entered and left again
+        const int j = occ_bits_layer_[i];
+        const SlotMap& map = colmap_[j];
+        const double b0 = colmap_b_[j];
+        const int k0 = (i - occ_bits_off_[j]) << 6;
+        do {
+          const int k = k0 + __builtin_ctzll(e);
+          e &= e - 1;
+          if (j == 0) mark_col(k);
+          else map.over(k, b0, [&](int s) {
+            if (col[s] >= j && map.cell(s, b0) == k) mark_col(s);
+          });
+        } while (e);
+      }
   }
-  occ_bits_map_ = occ_bits_;
+  for (size_t q = 0; q < occ_words_changed_.size(); ++q)
+    for (std::uint64_t m = occ_words_changed_[q]; m; m &= m - 1) {
+      const int i = static_cast<int>(q << 6) + __builtin_ctzll(m);
+      occ_bits_map_[i] = occ_bits_[i];
+    }
+  std::fill(occ_words_changed_.begin(), occ_words_changed_.end(), 0);
   for (int j = 1; j < n_open_; ++j) colmap_b_[j] = colmap_offset(j, tau);
   if (full) {
     const int* o0 = &occ_[l0.offset];
@@ -2604,6 +2614,7 @@ ChargeResult LayerSim::run() {
   for (int j = 0; j < n_open_; ++j) occ_bits_off_[j + 1] = occ_bits_off_[j] + (L_[j].S + 63) / 64;
   occ_bits_.assign(occ_bits_off_[n_open_], 0);
   occ_bits_layer_.resize(occ_bits_.size());
+  occ_words_changed_.assign((occ_bits_.size() + 63) / 64, 0);
   for (int j = 0; j < n_open_; ++j)
     std::fill(occ_bits_layer_.begin() + occ_bits_off_[j], occ_bits_layer_.begin() + occ_bits_off_[j + 1], j);
   for (int j = 0; j < n_open_; ++j)

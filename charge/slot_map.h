@@ -82,10 +82,14 @@ class SlotMap {
   template <class F>
   void across(int K, double b0, double lo, double hi, F&& f) const {
     const int last = S_a_ - 1;
-    for (int Kp : {K, K + S_b_, K + 2 * S_b_}) {
+    // b0 + s ratio + x spans [x_lo, x_hi] (s in 0 .. last, x in [lo, hi]):
+    // only the Kp in it are worked out
+    const double x_lo = b0 + lo - kEps, x_hi = b0 + last * ratio_ + hi + kEps;
+    int Kp = K;
+    while (Kp < x_lo) Kp += S_b_;
+    for (; Kp <= x_hi; Kp += S_b_) {
       // s ratio in [Kp - b0 - hi, Kp - b0 - lo]
       const int s0 = ceil_int((Kp - b0 - hi - kEps) * inv_ratio_);
-      if (s0 > last) break;  // s0 grows with Kp
       const int s1 = floor_int((Kp - b0 - lo + kEps) * inv_ratio_);
       for (int s = std::max(s0, 0); s <= std::min(s1, last); ++s) f(s);
     }
