@@ -334,10 +334,14 @@ class LayerSim {
   /// Cell k of layer j was entered (or left) at tau: marks the columns of
   /// the map and the slots of the support sweep that may change.
   void note_cell(int j, int k, double tau, bool entered);
-  void mark_col(int s) {
+  /// Column s may have changed from layer j up (update_columns()).
+  void mark_col(int s, int j) {
     if (!col_dirty_[s]) {
       col_dirty_[s] = 1;
       col_dirty_list_.push_back(s);
+      col_from_[s] = j;
+    } else if (j < col_from_[s]) {
+      col_from_[s] = j;
     }
   }
   void mark_sup(int j, int s) {
@@ -510,6 +514,7 @@ class LayerSim {
   std::vector<int> occ_bits_layer_;         // [word] its layer
   std::vector<std::uint64_t> occ_words_changed_;  // bit i: word i of occ_bits_ changed since the last map
   std::vector<int> col_dirty_list_;
+  std::vector<int> col_from_;               // per outer slot marked: the lowest layer whose cell changed
   std::vector<char> sup_dirty_;             // per slot (occ_ indexing)
   std::vector<std::vector<int>> sup_dirty_list_;  // [layer] slots to check
   std::vector<int> colmin_;                 // scratch of relax_surface(): window minima of col_
@@ -2180,7 +2185,7 @@ void LayerSim::update_columns(double tau, bool window) {
     const char* dirty = col_dirty_.data();
     auto check = [&](int s) {
       if (j > col[s] || dirty[s]) return;
-      if ((o[map.cell(s, b0)] >= 0) != (o[map.cell(s, b1)] >= 0)) mark_col(s);
+      if ((o[map.cell(s, b0)] >= 0) != (o[map.cell(s, b1)] >= 0)) mark_col(s, j);
     };
     // boundaries K of layer j: bit K differs from bit K - 1 (mod S_j)
     const std::uint64_t* w = &occ_bits_[occ_bits_off_[j]];
@@ -2218,9 +2223,9 @@ void LayerSim::update_columns(double tau, bool window) {
         do {
           const int k = k0 + __builtin_ctzll(e);
           e &= e - 1;
-          if (j == 0) mark_col(k);
+          if (j == 0) mark_col(k, 0);
           else map.over(k, b0, [&](int s) {
-            if (col[s] >= j && map.cell(s, b0) == k) mark_col(s);
+            if (col[s] >= j && map.cell(s, b0) == k) mark_col(s, j);
           });
         } while (e);
       }
@@ -2254,12 +2259,19 @@ void LayerSim::update_columns(double tau, bool window) {
       active_.resize(w);
     }
   } else {
+    // a marked column is full up to the lowest layer whose cell changed
+    // (its cells below are as they were, in a column that reached that
+    // layer): the walk starts there
     for (const int s : col_dirty_list_) {
-      int h = 0;
-      if (occ_[l0.offset + s] >= 0) {
+      int h = col_from_[s];
+      if (h == 0) {
+        if (occ_[l0.offset + s] < 0) {
+          col_[s] = 0;
+          continue;
+        }
         h = 1;
-        while (h < n_open_ && occ_[L_[h].offset + colmap_[h].cell(s, colmap_b_[h])] >= 0) ++h;
       }
+      while (h < n_open_ && occ_[L_[h].offset + colmap_[h].cell(s, colmap_b_[h])] >= 0) ++h;
       col_[s] = h;
     }
   }
@@ -2607,6 +2619,7 @@ ChargeResult LayerSim::run() {
   colmap_off_.assign(L_.size(), MapOffset());
   supmap_off_.assign(L_.size(), MapOffset());
   col_dirty_.assign(L_[0].S, 0);
+  col_from_.assign(L_[0].S, 0);
   col_dirty_list_.clear();
   sup_dirty_.assign(occ_.size(), 0);
   sup_dirty_list_.assign(n_open_, {});
