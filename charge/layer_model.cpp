@@ -344,13 +344,7 @@ class LayerSim {
       col_from_[s] = j;
     }
   }
-  void mark_sup(int j, int s) {
-    char& b = sup_dirty_[L_[j].offset + s];
-    if (!b) {
-      b = 1;
-      sup_dirty_list_[j].push_back(s);
-    }
-  }
+  void mark_sup(int j, int s) { sup_bits_[occ_bits_off_[j] + (s >> 6)] |= std::uint64_t{1} << (s & 63); }
   /// Offset b of the SlotMap from the outer layer to layer j at tau.
   /// Remembered per layer: the maps and note_cell() (on every move of a
   /// sweep or relaxation) ask for the same offset at one time many times.
@@ -515,8 +509,7 @@ class LayerSim {
   std::vector<std::uint64_t> occ_words_changed_;  // bit i: word i of occ_bits_ changed since the last map
   std::vector<int> col_dirty_list_;
   std::vector<int> col_from_;               // per outer slot marked: the lowest layer whose cell changed
-  std::vector<char> sup_dirty_;             // per slot (occ_ indexing)
-  std::vector<std::vector<int>> sup_dirty_list_;  // [layer] slots to check
+  std::vector<std::uint64_t> sup_bits_;     // slots to check, bits as occ_bits_ (a list and flags until 2026-12-05)
   std::vector<int> colmin_;                 // scratch of relax_surface(): window minima of col_
   int relax_reach_ = 3;                     // [outer cells] how far a move can change what roll_target() sees
   int col_m_ = 1;                           // half-width m of that window [slots]
@@ -2077,36 +2070,36 @@ void LayerSim::support_sweep(double tau) {
     // mod S_{j-1}, as slot_of()
     const double base = supmap_offset(j, tau);
     const SlotMap& map = supmap_[j];
-    std::vector<int>& list = sup_dirty_list_[j];
-    if (full) {
-      for (const int s : list) sup_dirty_[l.offset + s] = 0;
-      list.resize(l.S);
-      std::iota(list.begin(), list.end(), 0);
-    } else {
-      std::sort(list.begin(), list.end());
-      for (const int s : list) sup_dirty_[l.offset + s] = 0;
-    }
-    // falls from this layer mark the layer above, never this one: the list
-    // does not change while it is walked
-    for (const int s : list) {
-      const int id = o[s];
-      if (id < 0) continue;
-      if (ob[map.cell(s, base)] >= 0) continue;  // supported (the common case)
-      const double th = slot_angle(j, s, tau);
-      int k = j, sk = s;
-      while (k > 0) {
-        const int sb = slot_of(k - 1, th, tau);
-        if (occ(k - 1, sb) >= 0) break;
-        --k;
-        sk = sb;
+    // the marked slots in ascending order (all of them in a full sweep),
+    // each word taken out of sup_bits_ as the walk reaches it: falls from
+    // this layer mark the layer above (and the layers below, for the next
+    // sweep), never this one
+    std::uint64_t* marks = &sup_bits_[occ_bits_off_[j]];
+    const int nw = occ_bits_off_[j + 1] - occ_bits_off_[j];
+    for (int i = 0; i < nw; ++i) {
+      std::uint64_t m = marks[i];
+      marks[i] = 0;
+      if (full) m = i == nw - 1 && (l.S & 63) ? (std::uint64_t{1} << (l.S & 63)) - 1 : ~std::uint64_t{0};
+      for (; m; m &= m - 1) {
+        const int s = (i << 6) + __builtin_ctzll(m);
+        const int id = o[s];
+        if (id < 0) continue;
+        if (ob[map.cell(s, base)] >= 0) continue;  // supported (the common case)
+        const double th = slot_angle(j, s, tau);
+        int k = j, sk = s;
+        while (k > 0) {
+          const int sb = slot_of(k - 1, th, tau);
+          if (occ(k - 1, sb) >= 0) break;
+          --k;
+          sk = sb;
+        }
+        if (k != j) {
+          leave_slot(id, j, s, tau);
+          enter_slot(id, k, sk, tau);
+          moved_.push_back(id);
+        }
       }
-      if (k != j) {
-        leave_slot(id, j, s, tau);
-        enter_slot(id, k, sk, tau);
-        moved_.push_back(id);
-      }
     }
-    list.clear();
   }
   for (int j = 1; j < n_open_; ++j) supmap_b_[j] = supmap_offset(j, tau);
   t_sup_ = tau;
@@ -2621,11 +2614,10 @@ ChargeResult LayerSim::run() {
   col_dirty_.assign(L_[0].S, 0);
   col_from_.assign(L_[0].S, 0);
   col_dirty_list_.clear();
-  sup_dirty_.assign(occ_.size(), 0);
-  sup_dirty_list_.assign(n_open_, {});
   occ_bits_off_.assign(n_open_ + 1, 0);
   for (int j = 0; j < n_open_; ++j) occ_bits_off_[j + 1] = occ_bits_off_[j] + (L_[j].S + 63) / 64;
   occ_bits_.assign(occ_bits_off_[n_open_], 0);
+  sup_bits_.assign(occ_bits_.size(), 0);
   occ_bits_layer_.resize(occ_bits_.size());
   occ_words_changed_.assign((occ_bits_.size() + 63) / 64, 0);
   for (int j = 0; j < n_open_; ++j)

@@ -103,7 +103,13 @@ class SlotMap {
   template <class F>
   void over(int k, double b, F&& f) const {
     const int last = S_a_ - 1;
+    // the K whose range of cells is sure to be empty are passed over without
+    // the divisions: hi < 0 when K + 1 - b < -ratio, lo > last when K - b >
+    // (last + 1) ratio (with a margin for the rounding)
+    const double skip_below = b - 1 - ratio_ - kEps, stop_above = b + (last + 1) * ratio_ + kEps;
     for (int K : {k, k + S_b_, k + 2 * S_b_}) {
+      if (K < skip_below) continue;
+      if (K > stop_above) break;  // K grows: no later K reaches a cell either
       const int lo = ceil_int((K - b) / ratio_) - 1;
       if (lo > last) break;  // lo grows with K: no later K reaches a cell either
       const int hi = floor_int((K + 1 - b) / ratio_) + 1;
