@@ -125,30 +125,134 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
     t.sin_e[b] = std::sin(c);
   }
   // Each element's capsule covers a short arc of angles: its endpoints' angles
-  // widened by the angle the disc subtends at its nearest point.
-  for (int e = 0; e < s.n_elements(); ++e) {
+  // widened by the angle the disc subtends at its nearest point. The ride
+  // radius at an edge is the smallest entry radius over the elements whose
+  // arc holds it, and its element the first (lowest index) of equals: what a
+  // scan of the elements in order keeping strict improvements gives.
+  //
+  // Most of those entries are far from the smallest (the arc is wide, the
+  // nearest element is hit straight on), so they are bounded from below and
+  // computed only where the bound does not rule them out. With the
+  // endpoints' arc [L, H] in bins, a ray at bin B < L is at least
+  // j = floor(L - 1e-6) - B whole bins from every point of the segment, one
+  // at B > H at least j = B - ceil(H + 1e-6) (the 1e-6 bin covers the
+  // rounding of the angles):
+  //  1. the rays with j <= 0 (inside the arc or within a bin of it: the
+  //     element straight ahead and its neighbours, usually the smallest),
+  //     for every element in order, with the bound of 2. at delta = 0;
+  //  2. the rays with j >= 1: a ray at angle delta (< pi/2) from every point
+  //     of a segment at distance >= rho (> a') from the axis can only meet
+  //     the capsule of radius a' round it at a radius of at least
+  //     rho cos(delta) - sqrt(a'^2 - rho^2 sin^2(delta)) (law of cosines:
+  //     the near intersection with the disc round any point q of the segment
+  //     grows with |q| and with the angle to q), and not at all where
+  //     rho sin(delta) > a'. A computed entry is a point within a' = a + tol
+  //     of the segment (the roots' rounding moves it by far less than tol
+  //     where |u . n| is not tiny; rays nearly parallel to the segment are
+  //     never skipped), so an entry whose bound (at delta = j bins) exceeds
+  //     the best so far by tol cannot change the table.
+  // Same table to the bit (checked against the scan of every element on the
+  // fingerprint mills, the forecast's worn surfaces and the unit tests).
+  const int ne_all = s.n_elements();
+  const int mask = n - 1;  // n is a power of two
+  std::vector<double> node_angle(ne_all);
+  for (int i = 0; i < ne_all; ++i) node_angle[i] = std::atan2(s.nodes[i].y(), s.nodes[i].x());
+  struct Reach {
+    Capsule cap;
+    double rho;   // [m] distance of the segment from the axis (a lower bound)
+    int b0, b1;   // the bins of the arc (unwrapped: b & mask), b0..b1
+    int JL, JR;   // j = JL - B before the arc, B - JR after it
+  };
+  std::vector<Reach> reach;
+  reach.reserve(ne_all);
+  const double tol = 1e-6 * (R + a);  // [m] see a' above
+  const double a1 = a + tol;
+  auto offer = [&](int b, int e, double r) {
+    if (r < t.edge_radius_m[b] || (r == t.edge_radius_m[b] && e < edge_element[b])) {
+      t.edge_radius_m[b] = r;
+      edge_element[b] = e;
+    }
+  };
+  for (int e = 0; e < ne_all; ++e) {
     const V& A = s.nodes[e];
     const V& B = s.nodes[s.next(e)];
     const Capsule cap(A, B, a);  // its own terms once for all its rays
     const double ra = A.norm(), rb = B.norm();
     const double rmin = std::max(1e-9, std::min(ra, rb) - a);
     const double widen = rmin > a ? std::asin(a / rmin) : kPi;
-    const double pa = std::atan2(A.y(), A.x());
-    double dp = std::atan2(B.y(), B.x()) - pa;
-    dp = std::remainder(dp, kTwoPi);
-    const double lo = (dp >= 0 ? pa : pa + dp) - widen;
+    const double pa = node_angle[e];
+    const double dp = remainder_2pi(node_angle[s.next(e)] - pa);
+    const double lo_e = dp >= 0 ? pa : pa + dp;
+    const double lo = lo_e - widen;
     const double span = std::abs(dp) + 2.0 * widen;
-    const int b0 = static_cast<int>(std::floor(lo * t.inv_bin)) - 1;
-    const int nb = static_cast<int>(std::ceil(span * t.inv_bin)) + 2;
-    for (int k = 0; k <= nb; ++k) {
-      int b = (b0 + k) % n;
-      if (b < 0) b += n;
-      const double r = capsule_entry(t.cos_e[b], t.sin_e[b], cap);
-      if (r < t.edge_radius_m[b]) {
-        t.edge_radius_m[b] = r;
-        edge_element[b] = e;
+    const int b0 = floor_int(lo * t.inv_bin) - 1;
+    const int nb = ceil_int(span * t.inv_bin) + 2;
+    const double tc = cap.l2 > 0 ? std::clamp(-(A.x() * cap.abx + A.y() * cap.aby) / cap.l2, 0.0, 1.0) : 0.0;
+    const double rho = V(A.x() + tc * cap.abx, A.y() + tc * cap.aby).norm() * (1 - 1e-12);
+    const Reach rc{cap, rho, b0, b0 + nb, floor_int(lo_e * t.inv_bin - 1e-6),
+                   ceil_int((lo_e + std::abs(dp)) * t.inv_bin + 1e-6)};
+    // 1. j <= 0, with the bound at delta = 0, rho - a' (in a pocket the
+    // lifter before it may have ruled out the plate)
+    const double bound0 = rho > a1 ? rho - a1 - tol : -kInf;
+    for (int q = std::max(b0, rc.JL), q1 = std::min(rc.b1, rc.JR); q <= q1; ++q) {
+      const int b = q & mask;
+      const double ux = t.cos_e[b], uy = t.sin_e[b];
+      if (bound0 > t.edge_radius_m[b]) {
+        const double un = std::abs(ux * cap.nx + uy * cap.ny);
+        if (!(un > 1e-14 && un < 1e-6)) continue;
       }
+      offer(b, e, capsule_entry(ux, uy, cap));
     }
+    reach.push_back(rc);
+  }
+  // 2. j >= 1, where the bound does not rule it out. The bound depends on j
+  // only: one per j and element (bound[j]).
+  const double a12 = a1 * a1;
+  std::vector<double> bound;
+  for (int e = 0; e < ne_all; ++e) {
+    const Reach& rc = reach[e];
+    const int jmax = std::max(rc.JL - rc.b0, rc.b1 - rc.JR);
+    if (jmax < 1) continue;
+    if (!(rc.rho > a1) || 4 * jmax >= n) {  // no bound: every ray
+      for (int B = rc.b0; B <= rc.b1; ++B) {
+        if (B >= rc.JL && B <= rc.JR) continue;  // done in 1.
+        const int b = B & mask;
+        offer(b, e, capsule_entry(t.cos_e[b], t.sin_e[b], rc.cap));
+      }
+      continue;
+    }
+    // +inf: the ray passes the capsule (so do those further out: rho sin(delta) grows)
+    bound.resize(static_cast<size_t>(jmax) + 1);
+    int jpass = jmax + 1;
+    for (int j = 1; j <= jmax; ++j) {
+      const double rs = rc.rho * t.sin_e[j];
+      if (rs > a1) {
+        jpass = j;
+        break;
+      }
+      bound[j] = rc.rho * t.cos_e[j] - std::sqrt(a12 - rs * rs) - tol;
+    }
+    // The bound holds for computed entries where |u . n| is not within
+    // (1e-14, 1e-6): everywhere over the arc if it is well beyond at its
+    // middle (u . n turns by at most the angle turned), else tested per ray.
+    const int Bm = (rc.b0 + rc.b1) / 2;
+    const double un_mid = std::abs(t.cos_e[Bm & mask] * rc.cap.nx + t.sin_e[Bm & mask] * rc.cap.ny);
+    const bool un_clear = un_mid > 1e-6 + (rc.b1 - Bm + 2) * t.bin_rad;
+    auto ray = [&](int B, int j) {
+      const int b = B & mask;
+      const double ux = t.cos_e[b], uy = t.sin_e[b];
+      if (j >= jpass || bound[j] > t.edge_radius_m[b]) {
+        if (un_clear) return;
+        const double un = std::abs(ux * rc.cap.nx + uy * rc.cap.ny);
+        if (!(un > 1e-14 && un < 1e-6)) return;
+      }
+      offer(b, e, capsule_entry(ux, uy, rc.cap));
+    };
+    // before the arc, then after it; where |u . n| is clear of the band the
+    // rays from jpass on pass the capsule and are not visited
+    const int jend = un_clear ? jpass - 1 : jmax;
+    for (int B = std::min(rc.JL - 1, rc.b1); B >= rc.b0 && rc.JL - B <= jend; --B) ray(B, rc.JL - B);
+    for (int B = std::max(rc.JR + 1, rc.b0); B <= rc.b1 && B - rc.JR <= jend; ++B) ray(B, B - rc.JR);
   }
   // a bin keeps the smaller of its edges, and the element touched there
   t.ride_radius_m.resize(n);
@@ -189,7 +293,7 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
     double best = std::numeric_limits<double>::infinity();
     int be = none;
     for (int i = 0, e = first; i < count; ++i, e = e + 1 == ne ? 0 : e + 1) {
-      const double r = capsule_entry(u.x(), u.y(), Capsule(s.nodes[e], s.nodes[s.next(e)], a));
+      const double r = capsule_entry(u.x(), u.y(), reach[e].cap);  // (Capsule(nodes e, e + 1, a), made once)
       if (r < best) {
         best = r;
         be = e;
@@ -253,7 +357,7 @@ LinerRideTable build_liner_ride_table(const LinerSurface& s, double a, int bins_
 }
 
 bool first_ride_crossing(const LinerRideTable& t, double rot, const V& p0, const V& v0, const V& acc, double ta,
-                         double tb, double& t_hit, int& bin_hit) {
+                         double tb, double& t_hit, int& bin_hit, double reach_m) {
   const V pa = p0 + v0 * ta + 0.5 * acc * ta * ta;
   const V pb = p0 + v0 * tb + 0.5 * acc * tb * tb;
   const double psa = fast_atan2(pa.y(), pa.x()) - rot, psb = fast_atan2(pb.y(), pb.x()) - rot;
@@ -299,11 +403,14 @@ bool first_ride_crossing(const LinerRideTable& t, double rot, const V& p0, const
   };
   int b = b0 % t.n_bins;
   if (b < 0) b += t.n_bins;
-  V q2 = placed(b);
   for (int k = 0; k <= nb; ++k) {
     const int b1 = b + 1 == t.n_bins ? 0 : b + 1;
-    const V q1 = q2;  // edge b: the previous segment's end
-    q2 = placed(b1);
+    if (t.ride_radius_m[b] > reach_m) {  // not reached (the caller's bound)
+      b = b1;
+      continue;
+    }
+    const V q1 = placed(b);
+    const V q2 = placed(b1);
     const V e = q2 - q1;
     const V m(-e.y(), e.x());  // points into the mill (polyline runs anticlockwise)
     // f(t) = (p(t) - q1) . m: > 0 inside, crossing outward where f falls through 0.

@@ -15,6 +15,7 @@
 // bin), and the ride polyline used for crossings joins the edge points.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -90,8 +91,11 @@ double load_contact_spacing_m(const LinerSurface& s);
 /// bins between the polar angles of p(t_a) and p(t_b) (plus one on each side).
 /// Returns false if there is none; otherwise the crossing time and the bin.
 /// Exact: each ride segment is a straight line and the crossing a quadratic root.
+/// `reach_m`: the caller's bound on the arc, if it has one: the segments of
+/// the bins whose ride radius exceeds it are not searched (the caller knows
+/// the arc stays inside them; LayerSim::liner_crossing()).
 bool first_ride_crossing(const LinerRideTable& t, double rotation_rad, const Eigen::Vector2d& p0,
                          const Eigen::Vector2d& v0, const Eigen::Vector2d& acc, double t_a, double t_b, double& t_hit,
-                         int& bin_hit);
+                         int& bin_hit, double reach_m = std::numeric_limits<double>::infinity());
 
 }  // namespace linerlife

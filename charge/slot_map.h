@@ -29,7 +29,7 @@ class SlotMap {
   static constexpr double kEps = 1e-6;
 
   SlotMap() = default;
-  SlotMap(int S_a, int S_b, double ratio) : S_a_(S_a), S_b_(S_b), ratio_(ratio) {
+  SlotMap(int S_a, int S_b, double ratio) : S_a_(S_a), S_b_(S_b), ratio_(ratio), inv_ratio_(1.0 / ratio) {
     frac_.resize(S_a);
     order_.resize(S_a);
     std::iota(order_.begin(), order_.end(), 0);
@@ -73,6 +73,28 @@ class SlotMap {
     return true;
   }
 
+  /// Calls f(s) for every upper cell s whose lower cell may be on one side
+  /// of the lower ring's boundary K (between cells K - 1 and K, mod S_b) at
+  /// offset b0 and on the other at b0 + x, for some x in [lo, hi] (lo <= 0 <=
+  /// hi, both of magnitude below 1/2): b0 + s ratio + x crosses K, K + S_b or
+  /// K + 2 S_b (b0 + s ratio < 2 S_b + 1/2, as in over()). A superset: the
+  /// span is widened by kEps each side, so that rounding never hides a cell.
+  template <class F>
+  void across(int K, double b0, double lo, double hi, F&& f) const {
+    const int last = S_a_ - 1;
+    // b0 + s ratio + x spans [x_lo, x_hi] (s in 0 .. last, x in [lo, hi]):
+    // only the Kp in it are worked out
+    const double x_lo = b0 + lo - kEps, x_hi = b0 + last * ratio_ + hi + kEps;
+    int Kp = K;
+    while (Kp < x_lo) Kp += S_b_;
+    for (; Kp <= x_hi; Kp += S_b_) {
+      // s ratio in [Kp - b0 - hi, Kp - b0 - lo]
+      const int s0 = ceil_int((Kp - b0 - hi - kEps) * inv_ratio_);
+      const int s1 = floor_int((Kp - b0 - lo + kEps) * inv_ratio_);
+      for (int s = std::max(s0, 0); s <= std::min(s1, last); ++s) f(s);
+    }
+  }
+
   /// Calls f(s) for every upper cell s that may lie over lower cell k at
   /// offset b (a superset: one extra cell each side). b + s ratio runs up to
   /// b + S_b - ratio < 2 S_b + 1/2, so cell k is reached at k, k + S_b and
@@ -81,7 +103,13 @@ class SlotMap {
   template <class F>
   void over(int k, double b, F&& f) const {
     const int last = S_a_ - 1;
+    // the K whose range of cells is sure to be empty are passed over without
+    // the divisions: hi < 0 when K + 1 - b < -ratio, lo > last when K - b >
+    // (last + 1) ratio (with a margin for the rounding)
+    const double skip_below = b - 1 - ratio_ - kEps, stop_above = b + (last + 1) * ratio_ + kEps;
     for (int K : {k, k + S_b_, k + 2 * S_b_}) {
+      if (K < skip_below) continue;
+      if (K > stop_above) break;  // K grows: no later K reaches a cell either
       const int lo = ceil_int((K - b) / ratio_) - 1;
       if (lo > last) break;  // lo grows with K: no later K reaches a cell either
       const int hi = floor_int((K + 1 - b) / ratio_) + 1;
@@ -107,7 +135,7 @@ class SlotMap {
   }
 
   int S_a_ = 0, S_b_ = 0;
-  double ratio_ = 1;
+  double ratio_ = 1, inv_ratio_ = 1;
   std::vector<double> frac_;  // frac(s ratio), ascending
   std::vector<int> order_;    // the s of each
 };

@@ -68,3 +68,40 @@ TEST_CASE("SlotMap::over returns every upper cell over a lower cell", "[charge][
     }
   }
 }
+
+TEST_CASE("SlotMap::across returns every cell that changes across a boundary", "[charge][slot_map]") {
+  // the column map (LayerSim::update_columns()) finds the outer cells whose
+  // lower cell changes between two cells of different occupancy from the
+  // boundaries of the lower ring's occupancy: every cell whose lower cell
+  // changes crosses the boundary between its old and new cell
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (const auto& sz : {std::pair<int, int>{250, 246}, {41, 60}, {60, 41}, {232, 4}, {232, 46}, {97, 97}}) {
+    const int Sa = sz.first, Sb = sz.second;
+    const SlotMap map(Sa, Sb, static_cast<double>(Sb) / Sa);
+    for (int trial = 0; trial < 300; ++trial) {
+      const double b0 = trial < 30 ? Sb + 0.5 * U(rng) : 0.5 + U(rng) * Sb;
+      const double D = (U(rng) - 0.5) * 0.98;  // |D| < 0.49
+      double b1 = b0 + D;
+      if (b1 >= Sb + 0.5) b1 -= Sb;  // kept wrapped, as the model does
+      if (b1 < 0.5) b1 += Sb;
+      const double lo = std::min(0.0, D), hi = std::max(0.0, D);
+      for (int K = 0; K < Sb; ++K) {
+        std::set<int> got;
+        map.across(K, b0, lo, hi, [&](int s) { got.insert(s); });
+        int n = 0;
+        for (int s = 0; s < Sa; ++s) {
+          const int c0 = map.cell(s, b0), c1 = map.cell(s, b1);
+          if (c0 == c1) continue;
+          // the boundary between c0 and c1 (adjacent, mod Sb): K is the upper one
+          const int upper = (c1 == (c0 + 1) % Sb) ? c1 : c0;
+          if (upper != K) continue;
+          ++n;
+          INFO("Sa " << Sa << " Sb " << Sb << " b0 " << b0 << " D " << D << " K " << K << " s " << s);
+          CHECK(got.count(s) == 1);
+        }
+        CHECK(static_cast<int>(got.size()) <= n + 2 * (static_cast<int>(std::ceil(1.0 / map.ratio())) + 1));
+      }
+    }
+  }
+}
