@@ -128,6 +128,8 @@ struct Flight {
   V p_rel;            // [m] where it left its slot
   double t_check = 0; // [s] path checked up to here
   double t_next = 0;  // [s] end of the next interval to check
+  V p_next;           // [m] flight_position(t_next), kept by check_flight() (no drag) for its next call
+  double r_next = 0;  // [m] |p_next|
   bool landed = false;  // a landing has been found, at `landing` (it happens when the steps get there)
   Landing landing;
   bool drag = false;  // in the slurry pool: p0, v0 are advanced numerically
@@ -1141,6 +1143,8 @@ void LayerSim::launch(int j, int s, double tau, int seg, bool relaunch) {
   }
   f.t_check = f.t0;
   f.t_next = f.t0;
+  f.p_next = flight_position(f, f.t_next);
+  f.r_next = f.p_next.norm();
   // a relaunch from the charge surface: clear one diameter before the charge counts again
   f.grace = relaunch ? f.t0 + d_ / std::max(f.v0.norm(), 0.1 * omega_ * r_at) : f.t0;
   // Work done by the mill since the element entered the charge at rest
@@ -1315,8 +1319,10 @@ bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
   const double sample_len = 0.5 * d_;
   const V acc(0, -kGravity);
   double tau = f.t_next;
-  V pa = flight_position(f, tau), va = flight_velocity(f, tau);
-  double ra = pa.norm();
+  // where the last call left the path (launch() for the first): the same
+  // values as flight_position(f, tau) and its norm
+  V pa = f.p_next, va = flight_velocity(f, tau);
+  double ra = f.r_next;
   while (tau < t1) {
     const double spv = std::sqrt(va.squaredNorm());
     // Clear of the liner and of the charge: jump by the time needed to cover
@@ -1334,10 +1340,10 @@ bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
       const double cap = (ra < r_open_min_ || d_liner <= d_bed) ? kInf : skip_H_;
       tau += std::min(cap, (-sp + std::sqrt(sp * sp + 2 * kGravity * dist)) / kGravity);
       f.t_next = tau;
+      f.p_next = pa = flight_position(f, tau);
+      f.r_next = ra = pa.norm();
       if (tau >= t1) return false;
-      pa = flight_position(f, tau);
       va = flight_velocity(f, tau);
-      ra = pa.norm();
       continue;
     }
     // near something: check an interval of half a diameter, relative to the
@@ -1373,9 +1379,9 @@ bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
     }
     tau = tb;
     f.t_next = tau;
-    pa = pb;
+    f.p_next = pa = pb;
     va = flight_velocity(f, tb);
-    ra = rb;
+    f.r_next = ra = rb;
     if (tau - f.t_rel > 60.0 * kTwoPi / omega_)
       throw SimulationError(fmt::format("layer model: element {} has been in flight for {:.1f} s without landing", f.id, tau - f.t_rel));
   }
@@ -2764,6 +2770,10 @@ ChargeResult LayerSim::run() {
   col_m_ = static_cast<int>(std::ceil(w_max * (sample_dt + dt_ + 2.0 * skip_H_) / L_[0].delta)) + 1;
   t_step0_ = 0;
   update_columns(0.0, true);
+  // room for a step's waiting flights in each bucket of the ring (wait_flight()),
+  // so that the first turns of the ring do not grow them one by one
+  for (auto& b : wake_ring_) b.reserve(32);
+  wake_due_.reserve(32);
   for (long long k = 0; k < n_steps; ++k) {
     const double t0 = k * dt_, t1 = (k + 1) * dt_;
     t_step0_ = t0;
