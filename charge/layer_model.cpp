@@ -269,7 +269,8 @@ class LayerSim {
   /// An element just placed in slot s of layer j at time tau: if it is past
   /// where the layer lets go, it leaves now; if it gets there before the end
   /// of the current step, it leaves then (departures() has already run).
-  void check_departure(int j, int s, double tau);
+  /// sn: the sine of slot_dir(j, s, tau), which the caller has at hand.
+  void check_departure(int j, int s, double tau, double sn);
   void support_sweep(double tau);
   /// Element `id` leaves slot s of layer j at tau: the arc it swept since it
   /// came there is added to the occupancy (exact time integration).
@@ -281,8 +282,10 @@ class LayerSim {
   /// angle of repose (or where its layer cannot hold it), a sandpile rule.
   void relax_surface(double tau);
   /// Whether the element at (k, s) at tau would roll, and where: the top
-  /// cell (kn, sn) of the steepest-descent neighbouring column.
-  bool roll_target(int k, int s, double tau, int& kn_out, int& sn_out);
+  /// cell (kn, sn) of the steepest-descent neighbouring column. (c, sn_th)
+  /// is slot_dir(k, s, tau) on entry and, where it rolls, slot_dir(kn, sn,
+  /// tau) on return (the values roll_target() computed for the target).
+  bool roll_target(int k, int s, double tau, int& kn_out, int& sn_out, double& c, double& sn_th);
   /// ncol(theta, tau), which also hands back the slots it found on the way:
   /// at = slot_of(h, theta, tau) if h < n_open, below = slot_of(h - 1, theta,
   /// tau) if h > 0 (the same values; the foot-stability rules need them).
@@ -1712,11 +1715,16 @@ void LayerSim::place(int id, int k, int s, double tau) {
   // the column below; one on the rising side past the flight angle of its
   // layer (which cannot hold it there) rolls down the charge surface
   // (docs/models/layer.md §Foot).
+  //
+  // (cf, sf) is slot_dir(k, s, tau) throughout: roll_target() hands back the
+  // direction it computed for its target, so a roll does not derive it again.
+  double cf, sf;
+  slot_dir(k, s, tau, cf, sf);
   auto roll = [&] {
     for (int it = 0; it < 400; ++it) {
       occ(k, s) = id;  // tentatively here; neighbours are judged with it in place
       int kn, sn;
-      const bool rolls = roll_target(k, s, tau, kn, sn);
+      const bool rolls = roll_target(k, s, tau, kn, sn, cf, sf);
       occ(k, s) = -1;
       if (!rolls) break;
       k = kn;
@@ -1726,32 +1734,30 @@ void LayerSim::place(int id, int k, int s, double tau) {
   roll();
   // Still past the flight angle (the surface below is full): the surface flow
   // carries it down to the toe, the first column against the rotation with
-  // room at a place its layer can hold.
-  if (past_flight_angle(k, s, tau)) {
+  // room at a place its layer can hold. (past_flight_angle(k, s, tau))
+  if (cf > 0 && sf > sin_fa_[k]) {
     double theta = slot_angle(k, s, tau);
     int kk;
     if (toe_ward_room(theta, tau, true, kk)) {
       k = kk;
       s = slot_of(kk, theta, tau);
+      slot_dir(k, s, tau, cf, sf);
     }
     roll();
   }
   enter_slot(id, k, s, tau);
-  double cf, sf;
-  slot_dir(k, s, tau, cf, sf);
   elem_y_entry_[id] = L_[k].r * sf;
   deepest_ = std::max(deepest_, k);
-  check_departure(k, s, tau);
+  check_departure(k, s, tau, sf);
 }
 
 // Inlined into its two callers, place()'s roll loop and relax_surface()'s
 // visits (the call and its spills: 1.2 M of 260 M instructions on the bench's
 // "media size -25%" case).
-__attribute__((always_inline)) inline bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out) {
+__attribute__((always_inline)) inline bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out,
+                                                                 double& c, double& sn_th) {
   const int id = occ(k, s);
   const double th = slot_angle(k, s, tau);
-  double c, sn_th;
-  slot_dir(k, s, tau, c, sn_th);
   const double x = L_[k].r * c, y = L_[k].r * sn_th;
   const bool past = c > 0 && sn_th > sin_fa_[k];
   // the angle-of-repose rule is the foot's: it acts on the toe side of the
@@ -1759,7 +1765,7 @@ __attribute__((always_inline)) inline bool LayerSim::roll_target(int k, int s, d
   const bool repose = c < 0 && !L_[k].held;
   if (!past && !repose && (k == 0 || L_[k].held)) return false;  // nothing can move it
   bool found = false;
-  double best_y = y;
+  double best_y = y, c_out = 0, s_out = 0;
   // a neighbouring column is a target only by the past or the repose rule
   // (an unheld top on the rising side short of its flight angle can only
   // fall over an overhang, below)
@@ -1782,6 +1788,8 @@ __attribute__((always_inline)) inline bool LayerSim::roll_target(int k, int s, d
       best_y = yn;
       kn_out = kn;
       sn_out = sn;
+      c_out = cn;
+      s_out = snn;
       found = true;
     }
   }
@@ -1800,10 +1808,16 @@ __attribute__((always_inline)) inline bool LayerSim::roll_target(int k, int s, d
         if (!(kq == k && sq == s) && yq < best_y - 0.25 * d_) {
           kn_out = kq;
           sn_out = sq;
+          c_out = cq;
+          s_out = sq_th;
           found = true;
         }
       }
     }
+  }
+  if (found) {
+    c = c_out;
+    sn_th = s_out;
   }
   return found;
 }
@@ -1872,13 +1886,13 @@ void LayerSim::relax_surface(double tau) {
         const int id = occ(k, s);
         if (id < 0) break;
         int kn, sn;
-        if (!roll_target(k, s, tau, kn, sn)) break;
+        double c0, s0y;
+        slot_dir(k, s, tau, c0, s0y);
+        const double y0 = L_[k].r * s0y;  // before roll_target() turns (c0, s0y) to the target's
+        if (!roll_target(k, s, tau, kn, sn, c0, s0y)) break;
         stable = false;
         ++moved;
         // the mill lifted it to here since it entered; it settles lower
-        double c0, s0y;
-        slot_dir(k, s, tau, c0, s0y);
-        const double y0 = L_[k].r * s0y;
         if (averaging_ && tau >= t_avg0_) energy_ += m_ * kGravity * (y0 - elem_y_entry_[id]);
         leave_slot(id, k, s, tau);
         place(id, kn, sn, tau);
@@ -2120,15 +2134,13 @@ bool LayerSim::repose_exact(int s, int h, int k, int st, double x, double y, dou
   return true;
 }
 
-void LayerSim::check_departure(int j, int s, double tau) {
+void LayerSim::check_departure(int j, int s, double tau, double sn) {
   const Layer& l = L_[j];
   if (!(l.omega > 0)) return;
   // Where the layer cannot hold it (past its flight angle, where sin(theta)
   // exceeds sin(flight angle)) it falls on at once. One that reaches its
   // flight angle later is launched by departures(), which also looks one
   // step back for elements placed after its scan.
-  double c, sn;
-  slot_dir(j, s, tau, c, sn);
   if (sn > sin_fa_[j] + 1e-12) launch(j, s, tau, -1, true);
 }
 
