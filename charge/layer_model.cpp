@@ -42,6 +42,13 @@ constexpr double kInvTwoPi = 1.0 / kTwoPi;
 
 inline double wrap2pi(double a) {
   if (a >= 0 && a < kTwoPi) return a;
+  // One turn out (most of the rest: slot_of() of an atan2 angle in (-pi,
+  // pi]): there a * kInvTwoPi lies in (-0.9995, 0) (no underflow to -0
+  // above -1e-300) or in (1.001, 1.99), so its floor is -1 or 1 and the
+  // line below gives a - 2 pi (-1) = a + 2 pi or a - 2 pi: the same bits
+  // without the floor.
+  if (a < -1e-300 && a > -6.28) return a + kTwoPi;
+  if (a > 6.29 && a < 12.5) return a - kTwoPi;
   return a - kTwoPi * floor_exact(a * kInvTwoPi);
 }
 
