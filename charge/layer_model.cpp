@@ -42,6 +42,13 @@ constexpr double kInvTwoPi = 1.0 / kTwoPi;
 
 inline double wrap2pi(double a) {
   if (a >= 0 && a < kTwoPi) return a;
+  // One turn out (most of the rest: slot_of() of an atan2 angle in (-pi,
+  // pi]): there a * kInvTwoPi lies in (-0.9995, 0) (no underflow to -0
+  // above -1e-300) or in (1.001, 1.99), so its floor is -1 or 1 and the
+  // line below gives a - 2 pi (-1) = a + 2 pi or a - 2 pi: the same bits
+  // without the floor.
+  if (a < -1e-300 && a > -6.28) return a + kTwoPi;
+  if (a > 6.29 && a < 12.5) return a - kTwoPi;
   return a - kTwoPi * floor_exact(a * kInvTwoPi);
 }
 
@@ -128,6 +135,8 @@ struct Flight {
   V p_rel;            // [m] where it left its slot
   double t_check = 0; // [s] path checked up to here
   double t_next = 0;  // [s] end of the next interval to check
+  V p_next;           // [m] flight_position(t_next), kept by check_flight() (no drag) for its next call
+  double r_next = 0;  // [m] |p_next|
   bool landed = false;  // a landing has been found, at `landing` (it happens when the steps get there)
   Landing landing;
   bool drag = false;  // in the slurry pool: p0, v0 are advanced numerically
@@ -269,7 +278,8 @@ class LayerSim {
   /// An element just placed in slot s of layer j at time tau: if it is past
   /// where the layer lets go, it leaves now; if it gets there before the end
   /// of the current step, it leaves then (departures() has already run).
-  void check_departure(int j, int s, double tau);
+  /// sn: the sine of slot_dir(j, s, tau), which the caller has at hand.
+  void check_departure(int j, int s, double tau, double sn);
   void support_sweep(double tau);
   /// Element `id` leaves slot s of layer j at tau: the arc it swept since it
   /// came there is added to the occupancy (exact time integration).
@@ -281,8 +291,10 @@ class LayerSim {
   /// angle of repose (or where its layer cannot hold it), a sandpile rule.
   void relax_surface(double tau);
   /// Whether the element at (k, s) at tau would roll, and where: the top
-  /// cell (kn, sn) of the steepest-descent neighbouring column.
-  bool roll_target(int k, int s, double tau, int& kn_out, int& sn_out);
+  /// cell (kn, sn) of the steepest-descent neighbouring column. (c, sn_th)
+  /// is slot_dir(k, s, tau) on entry and, where it rolls, slot_dir(kn, sn,
+  /// tau) on return (the values roll_target() computed for the target).
+  bool roll_target(int k, int s, double tau, int& kn_out, int& sn_out, double& c, double& sn_th);
   /// ncol(theta, tau), which also hands back the slots it found on the way:
   /// at = slot_of(h, theta, tau) if h < n_open, below = slot_of(h - 1, theta,
   /// tau) if h > 0 (the same values; the foot-stability rules need them).
@@ -1141,6 +1153,8 @@ void LayerSim::launch(int j, int s, double tau, int seg, bool relaunch) {
   }
   f.t_check = f.t0;
   f.t_next = f.t0;
+  f.p_next = flight_position(f, f.t_next);
+  f.r_next = f.p_next.norm();
   // a relaunch from the charge surface: clear one diameter before the charge counts again
   f.grace = relaunch ? f.t0 + d_ / std::max(f.v0.norm(), 0.1 * omega_ * r_at) : f.t0;
   // Work done by the mill since the element entered the charge at rest
@@ -1300,7 +1314,10 @@ bool LayerSim::inside_charge(const V& q, double r, double theta, double tq) cons
   return occ(k, slot_of(k, theta, tq)) >= 0;
 }
 
-bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
+// Inlined into its one caller, check_flights(): a call checks about one
+// interval (78,843 calls, some 81k intervals for media size -25 %), so the
+// call's own cost (frame, the Landing handed back) was a good part of it.
+__attribute__((always_inline)) inline bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
   // Each interval of the path is checked once, as soon as the steps reach its
   // start (so the number of checks does not depend on the time step); a
   // landing found beyond the current step is kept until the steps reach it.
@@ -1315,8 +1332,10 @@ bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
   const double sample_len = 0.5 * d_;
   const V acc(0, -kGravity);
   double tau = f.t_next;
-  V pa = flight_position(f, tau), va = flight_velocity(f, tau);
-  double ra = pa.norm();
+  // where the last call left the path (launch() for the first): the same
+  // values as flight_position(f, tau) and its norm
+  V pa = f.p_next, va = flight_velocity(f, tau);
+  double ra = f.r_next;
   while (tau < t1) {
     const double spv = std::sqrt(va.squaredNorm());
     // Clear of the liner and of the charge: jump by the time needed to cover
@@ -1334,10 +1353,10 @@ bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
       const double cap = (ra < r_open_min_ || d_liner <= d_bed) ? kInf : skip_H_;
       tau += std::min(cap, (-sp + std::sqrt(sp * sp + 2 * kGravity * dist)) / kGravity);
       f.t_next = tau;
+      f.p_next = pa = flight_position(f, tau);
+      f.r_next = ra = pa.norm();
       if (tau >= t1) return false;
-      pa = flight_position(f, tau);
       va = flight_velocity(f, tau);
-      ra = pa.norm();
       continue;
     }
     // near something: check an interval of half a diameter, relative to the
@@ -1373,9 +1392,9 @@ bool LayerSim::check_flight(Flight& f, double t1, Landing& out) {
     }
     tau = tb;
     f.t_next = tau;
-    pa = pb;
+    f.p_next = pa = pb;
     va = flight_velocity(f, tb);
-    ra = rb;
+    f.r_next = ra = rb;
     if (tau - f.t_rel > 60.0 * kTwoPi / omega_)
       throw SimulationError(fmt::format("layer model: element {} has been in flight for {:.1f} s without landing", f.id, tau - f.t_rel));
   }
@@ -1567,7 +1586,9 @@ void LayerSim::check_flights(double t1) {
   }
 }
 
-void LayerSim::schedule_flight(int i) {
+// inline (as wait_flight()): called once per checked interval (about 80k
+// times for media size -25 %), mostly from check_flights()
+inline void LayerSim::schedule_flight(int i) {
   // the flight's next event in this step: its landing, or the check of its
   // next interval
   const Flight& f = flights_[i];
@@ -1581,7 +1602,7 @@ void LayerSim::schedule_flight(int i) {
   else wait_flight(i, step_k_ + 1);
 }
 
-void LayerSim::wait_flight(int i, long long k_min) {
+inline void LayerSim::wait_flight(int i, long long k_min) {
   // The first step k >= k_min whose end t1 = (k + 1) dt (as run() computes
   // it) the flight's event is due by, on the tests of schedule_flight();
   // estimated from the time, then settled by those tests.
@@ -1712,11 +1733,16 @@ void LayerSim::place(int id, int k, int s, double tau) {
   // the column below; one on the rising side past the flight angle of its
   // layer (which cannot hold it there) rolls down the charge surface
   // (docs/models/layer.md §Foot).
+  //
+  // (cf, sf) is slot_dir(k, s, tau) throughout: roll_target() hands back the
+  // direction it computed for its target, so a roll does not derive it again.
+  double cf, sf;
+  slot_dir(k, s, tau, cf, sf);
   auto roll = [&] {
     for (int it = 0; it < 400; ++it) {
       occ(k, s) = id;  // tentatively here; neighbours are judged with it in place
       int kn, sn;
-      const bool rolls = roll_target(k, s, tau, kn, sn);
+      const bool rolls = roll_target(k, s, tau, kn, sn, cf, sf);
       occ(k, s) = -1;
       if (!rolls) break;
       k = kn;
@@ -1726,32 +1752,30 @@ void LayerSim::place(int id, int k, int s, double tau) {
   roll();
   // Still past the flight angle (the surface below is full): the surface flow
   // carries it down to the toe, the first column against the rotation with
-  // room at a place its layer can hold.
-  if (past_flight_angle(k, s, tau)) {
+  // room at a place its layer can hold. (past_flight_angle(k, s, tau))
+  if (cf > 0 && sf > sin_fa_[k]) {
     double theta = slot_angle(k, s, tau);
     int kk;
     if (toe_ward_room(theta, tau, true, kk)) {
       k = kk;
       s = slot_of(kk, theta, tau);
+      slot_dir(k, s, tau, cf, sf);
     }
     roll();
   }
   enter_slot(id, k, s, tau);
-  double cf, sf;
-  slot_dir(k, s, tau, cf, sf);
   elem_y_entry_[id] = L_[k].r * sf;
   deepest_ = std::max(deepest_, k);
-  check_departure(k, s, tau);
+  check_departure(k, s, tau, sf);
 }
 
 // Inlined into its two callers, place()'s roll loop and relax_surface()'s
 // visits (the call and its spills: 1.2 M of 260 M instructions on the bench's
 // "media size -25%" case).
-__attribute__((always_inline)) inline bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out) {
+__attribute__((always_inline)) inline bool LayerSim::roll_target(int k, int s, double tau, int& kn_out, int& sn_out,
+                                                                 double& c, double& sn_th) {
   const int id = occ(k, s);
   const double th = slot_angle(k, s, tau);
-  double c, sn_th;
-  slot_dir(k, s, tau, c, sn_th);
   const double x = L_[k].r * c, y = L_[k].r * sn_th;
   const bool past = c > 0 && sn_th > sin_fa_[k];
   // the angle-of-repose rule is the foot's: it acts on the toe side of the
@@ -1759,7 +1783,7 @@ __attribute__((always_inline)) inline bool LayerSim::roll_target(int k, int s, d
   const bool repose = c < 0 && !L_[k].held;
   if (!past && !repose && (k == 0 || L_[k].held)) return false;  // nothing can move it
   bool found = false;
-  double best_y = y;
+  double best_y = y, c_out = 0, s_out = 0;
   // a neighbouring column is a target only by the past or the repose rule
   // (an unheld top on the rising side short of its flight angle can only
   // fall over an overhang, below)
@@ -1782,6 +1806,8 @@ __attribute__((always_inline)) inline bool LayerSim::roll_target(int k, int s, d
       best_y = yn;
       kn_out = kn;
       sn_out = sn;
+      c_out = cn;
+      s_out = snn;
       found = true;
     }
   }
@@ -1800,10 +1826,16 @@ __attribute__((always_inline)) inline bool LayerSim::roll_target(int k, int s, d
         if (!(kq == k && sq == s) && yq < best_y - 0.25 * d_) {
           kn_out = kq;
           sn_out = sq;
+          c_out = cq;
+          s_out = sq_th;
           found = true;
         }
       }
     }
+  }
+  if (found) {
+    c = c_out;
+    sn_th = s_out;
   }
   return found;
 }
@@ -1872,13 +1904,13 @@ void LayerSim::relax_surface(double tau) {
         const int id = occ(k, s);
         if (id < 0) break;
         int kn, sn;
-        if (!roll_target(k, s, tau, kn, sn)) break;
+        double c0, s0y;
+        slot_dir(k, s, tau, c0, s0y);
+        const double y0 = L_[k].r * s0y;  // before roll_target() turns (c0, s0y) to the target's
+        if (!roll_target(k, s, tau, kn, sn, c0, s0y)) break;
         stable = false;
         ++moved;
         // the mill lifted it to here since it entered; it settles lower
-        double c0, s0y;
-        slot_dir(k, s, tau, c0, s0y);
-        const double y0 = L_[k].r * s0y;
         if (averaging_ && tau >= t_avg0_) energy_ += m_ * kGravity * (y0 - elem_y_entry_[id]);
         leave_slot(id, k, s, tau);
         place(id, kn, sn, tau);
@@ -2120,15 +2152,13 @@ bool LayerSim::repose_exact(int s, int h, int k, int st, double x, double y, dou
   return true;
 }
 
-void LayerSim::check_departure(int j, int s, double tau) {
+void LayerSim::check_departure(int j, int s, double tau, double sn) {
   const Layer& l = L_[j];
   if (!(l.omega > 0)) return;
   // Where the layer cannot hold it (past its flight angle, where sin(theta)
   // exceeds sin(flight angle)) it falls on at once. One that reaches its
   // flight angle later is launched by departures(), which also looks one
   // step back for elements placed after its scan.
-  double c, sn;
-  slot_dir(j, s, tau, c, sn);
   if (sn > sin_fa_[j] + 1e-12) launch(j, s, tau, -1, true);
 }
 
@@ -2764,6 +2794,10 @@ ChargeResult LayerSim::run() {
   col_m_ = static_cast<int>(std::ceil(w_max * (sample_dt + dt_ + 2.0 * skip_H_) / L_[0].delta)) + 1;
   t_step0_ = 0;
   update_columns(0.0, true);
+  // room for a step's waiting flights in each bucket of the ring (wait_flight()),
+  // so that the first turns of the ring do not grow them one by one
+  for (auto& b : wake_ring_) b.reserve(32);
+  wake_due_.reserve(32);
   for (long long k = 0; k < n_steps; ++k) {
     const double t0 = k * dt_, t1 = (k + 1) * dt_;
     t_step0_ = t0;
