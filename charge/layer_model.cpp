@@ -275,6 +275,9 @@ class LayerSim {
   bool toe_ward_room(double& theta, double tau, bool holdable, int& k_out) const;
   /// The slot is on the rising side beyond the flight angle of its layer.
   bool past_flight_angle(int k, int s, double tau) const;
+  /// The same from the slot's direction (c, sn) = slot_dir(k, s, tau), where
+  /// the caller has it.
+  bool past_flight_dir(int k, double c, double sn) const { return c > 0 && sn > sin_fa_[k]; }
   /// An element just placed in slot s of layer j at time tau: if it is past
   /// where the layer lets go, it leaves now; if it gets there before the end
   /// of the current step, it leaves then (departures() has already run).
@@ -1724,7 +1727,7 @@ bool LayerSim::toe_ward_room(double& theta, double tau, bool holdable, int& k_ou
 bool LayerSim::past_flight_angle(int k, int s, double tau) const {
   double c, sn;
   slot_dir(k, s, tau, c, sn);
-  return c > 0 && sn > sin_fa_[k];
+  return past_flight_dir(k, c, sn);
 }
 
 void LayerSim::place(int id, int k, int s, double tau) {
@@ -1752,8 +1755,8 @@ void LayerSim::place(int id, int k, int s, double tau) {
   roll();
   // Still past the flight angle (the surface below is full): the surface flow
   // carries it down to the toe, the first column against the rotation with
-  // room at a place its layer can hold. (past_flight_angle(k, s, tau))
-  if (cf > 0 && sf > sin_fa_[k]) {
+  // room at a place its layer can hold.
+  if (past_flight_dir(k, cf, sf)) {
     double theta = slot_angle(k, s, tau);
     int kk;
     if (toe_ward_room(theta, tau, true, kk)) {
@@ -1777,7 +1780,7 @@ __attribute__((always_inline)) inline bool LayerSim::roll_target(int k, int s, d
   const int id = occ(k, s);
   const double th = slot_angle(k, s, tau);
   const double x = L_[k].r * c, y = L_[k].r * sn_th;
-  const bool past = c > 0 && sn_th > sin_fa_[k];
+  const bool past = past_flight_dir(k, c, sn_th);
   // the angle-of-repose rule is the foot's: it acts on the toe side of the
   // mill (the descending half); layers held by lifters do not roll
   const bool repose = c < 0 && !L_[k].held;
@@ -2096,7 +2099,7 @@ __attribute__((always_inline)) inline bool LayerSim::relax_candidate_exact(int s
   const int st = slot_of(k, th, tau);
   double ct, stp;
   slot_dir(k, st, tau, ct, stp);
-  if (ct > 0 && stp > sin_fa_[k]) return true;  // past the flight angle
+  if (past_flight_dir(k, ct, stp)) return true;
   if (!unheld) return false;
   const double x = L_[k].r * ct, y = L_[k].r * stp;
   // The repose bound first (cheaper than the overhang's look at the cell
