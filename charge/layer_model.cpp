@@ -227,14 +227,34 @@ class LayerSim {
   /// start of the step and sorted once; the few that arise during it
   /// (landings found, launches) are inserted in order.
   enum EventKind { kDepart = 0, kLand = 1, kCheck = 2 };
+  /// (t, kind, index) as one 128-bit unsigned key, compared in one go: the
+  /// high word t's bits mapped to an unsigned order (sign bit flipped for
+  /// t >= 0, all bits for t < 0: the order of the doubles, and reversible, so
+  /// t() gives t back), the low word kind and index. The same order as
+  /// comparing t, then kind, then index: -0 is taken as +0 (t + 0.0), equal as
+  /// the doubles compare (no event time is -0 or NaN: they are sums with the
+  /// step's start t0 >= +0).
   struct StepEvent {
-    double t;
-    int kind, index;
+    std::uint64_t tkey, tie;
+    StepEvent(double t_, int kind_, int index_)
+        : tie((static_cast<std::uint64_t>(kind_) << 32) | static_cast<std::uint32_t>(index_)) {
+      const double t0 = t_ + 0.0;  // -0 -> +0, every other value unchanged
+      std::uint64_t b;
+      std::memcpy(&b, &t0, sizeof b);
+      tkey = b ^ (b >> 63 ? ~std::uint64_t{0} : std::uint64_t{1} << 63);
+    }
+    double t() const {
+      const std::uint64_t b = tkey ^ (tkey >> 63 ? std::uint64_t{1} << 63 : ~std::uint64_t{0});
+      double x;
+      std::memcpy(&x, &b, sizeof x);
+      return x;
+    }
+    int kind() const { return static_cast<int>(tie >> 32); }
+    int index() const { return static_cast<int>(static_cast<std::uint32_t>(tie)); }
   };
+  __extension__ typedef unsigned __int128 EventKey;
   static bool event_after(const StepEvent& x, const StepEvent& y) {
-    if (x.t != y.t) return x.t > y.t;
-    if (x.kind != y.kind) return x.kind > y.kind;
-    return x.index > y.index;
+    return ((static_cast<EventKey>(x.tkey) << 64) | x.tie) > ((static_cast<EventKey>(y.tkey) << 64) | y.tie);
   }
   void push_event(const StepEvent& e) {
     events_.insert(std::lower_bound(events_.begin(), events_.end(), e, event_after), e);
@@ -1511,20 +1531,20 @@ void LayerSim::check_flights(double t1) {
   while (!events_.empty()) {
     const StepEvent ev = events_.back();
     events_.pop_back();
-    if (ev.kind == kDepart) {
-      const DepartureEvent& e = dep_events_[ev.index];
+    if (ev.kind() == kDepart) {
+      const DepartureEvent& e = dep_events_[ev.index()];
       const int id = occ(e.j, e.s);
       if (id < 0) continue;
       // an element placed there after the slot crossed leaves when it came
       launch(e.j, e.s, std::max(e.t, elem_t_slot_[id]), e.seg);  // schedules its flight
       continue;
     }
-    const int i = ev.index;
+    const int i = ev.index();
     Flight& f = flights_[i];
-    if (ev.kind == kCheck) {
+    if (ev.kind() == kCheck) {
       // the path up to the next event (at least one interval), then the
       // flight waits for its next interval or its landing
-      double t_lim = events_.empty() ? t1 : std::min(t1, events_.back().t);
+      double t_lim = events_.empty() ? t1 : std::min(t1, events_.back().t());
       // at least one interval: check_flight() walks whole intervals, but
       // check_flight_drag() ends one at t_lim, so it gets one drag step (1 ms)
       t_lim = std::max(t_lim, drag_on_ ? next_check(f) + 1e-3 : next_up(next_check(f)));
