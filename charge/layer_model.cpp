@@ -2470,13 +2470,15 @@ double LayerSim::bed_clearance(double r, double theta, double tau) const {
     int s = static_cast<int>(wrap2pi(theta - (l0.phase + l0.omega * (t - t_step0_)) + 0.5 * l0.delta) * l0.inv_delta);
     return s >= S0 ? s - S0 : s;
   };
+  int s_win;
   // The window maxima (of the map at t_win) cover the rotation of every
   // layer over (t_win, tau + H] and two extra cells of growth by landings
   // meanwhile.
   {
     const double rot_slots = omega_ * ((tau - t_win_) + skip_H_) * l0.inv_delta;
     const double lateral = r * l0.delta * (col_m_ - 0.5 - rot_slots);
-    const int h = std::min(n_open_, colwin_[outer_slot(t_win_)] + 2);
+    s_win = outer_slot(t_win_);
+    const int h = std::min(n_open_, colwin_[s_win] + 2);
     const double radial = (R_eff_ - h * d_) - r;
     if (radial >= lateral || radial > 0.5 * d_) return std::min(radial, lateral);
   }
@@ -2488,22 +2490,24 @@ double LayerSim::bed_clearance(double r, double theta, double tau) const {
   const double rot_slots = omega_ * ((tau - t_map_) + skip_H_) * l0.inv_delta;
   const double cell = r * l0.delta;
   double best = cell * (col_m_ - 0.5 - rot_slots);
-  const int s = outer_slot(t_map_);
-  auto gap = [&](int i) { return (R_eff_ - std::min(n_open_, col_[i] + 2) * d_) - r; };
+  // (a map of the window maxima's time: the slot found above)
+  const int s = t_map_ == t_win_ ? s_win : outer_slot(t_map_);
+  auto gap = [&](int h) { return (R_eff_ - std::min(n_open_, h + 2) * d_) - r; };
   {
     const double a = cell * std::max(0.0, 0 - 0.5 - rot_slots);
     if (a >= best) return best;
-    best = std::min(best, std::max(gap(s), a));
+    best = std::min(best, std::max(gap(col_[s]), a));
   }
-  // the columns q cells either side (the one against the rotation first)
+  // the columns q cells either side: gap() falls as the column rises (each
+  // rounding is monotone), so min(max(gap(lo), a), max(gap(hi), a)) is
+  // max(gap(the higher column), a), the same bits with one gap
   int lo = s, hi = s;
   for (int q = 1; q <= col_m_; ++q) {
     const double a = cell * std::max(0.0, q - 0.5 - rot_slots);
     if (a >= best) break;
     lo = lo == 0 ? S0 - 1 : lo - 1;
     hi = hi == S0 - 1 ? 0 : hi + 1;
-    best = std::min(best, std::max(gap(lo), a));
-    best = std::min(best, std::max(gap(hi), a));
+    best = std::min(best, std::max(gap(std::max(col_[lo], col_[hi])), a));
   }
   return best;
 }
