@@ -2545,6 +2545,13 @@ V LayerSim::pocket_push(int b, int n, double c, double sn, double C, double Fr_g
   return (C + Fr_g) * er - (Ft > 0 ? 1.0 : -1.0) * (gc * W_above - T_above) * et;
 }
 
+// sample() is arithmetic on doubles throughout: with AVX2 where the CPU has
+// it (a second copy, picked at load time) the three-operand forms spare the
+// register copies of SSE2. The same operations in the same order, and avx2
+// does not enable FMA, so the same results to the bit.
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+__attribute__((target_clones("avx2", "default")))
+#endif
 void LayerSim::sample(double tau, double w) {
   const double rot = mill_angle(tau);
   // --- flying elements, for the occupancy indicators (the en-masse ones
