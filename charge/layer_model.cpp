@@ -273,9 +273,9 @@ class LayerSim {
   /// From theta, steps against the rotation (one outer cell at a time) to
   /// the first column with room below n_open (and, with `holdable`, whose
   /// top cell its layer can hold), passing over the columns the column map
-  /// shows full; theta and k_out are that column's angle and top. False if
-  /// there is none.
-  bool toe_ward_room(double& theta, double tau, bool holdable, int& k_out) const;
+  /// shows full; theta and k_out are that column's angle and top, s_out =
+  /// slot_of(k_out, theta, tau). False if there is none.
+  bool toe_ward_room(double& theta, double tau, bool holdable, int& k_out, int& s_out) const;
   /// The slot is on the rising side beyond the flight angle of its layer.
   bool past_flight_angle(int k, int s, double tau) const;
   /// The same from the slot's direction (c, sn) = slot_dir(k, s, tau), where
@@ -1644,7 +1644,8 @@ void LayerSim::deposit(int id, double theta, double tau, const V& v_land) {
   if (k >= n_open_) {
     // No room inside the allowed layers (version 1.2: inside r_i): the
     // element is moved towards the toe, against the rotation (thesis §4.6.2).
-    if (!toe_ward_room(theta, tau, false, k)) throw SimulationError("layer model: no room left for a landing element");
+    int sk;
+    if (!toe_ward_room(theta, tau, false, k, sk)) throw SimulationError("layer model: no room left for a landing element");
   }
   // Foot stability, 1: momentum (thesis §4.4.2, Radziszewski 1998). The
   // element keeps the part of its velocity along the charge surface relative
@@ -1687,7 +1688,7 @@ void LayerSim::deposit(int id, double theta, double tau, const V& v_land) {
   place(id, k, slot_of(k, theta, tau), tau);
 }
 
-bool LayerSim::toe_ward_room(double& theta, double tau, bool holdable, int& k_out) const {
+bool LayerSim::toe_ward_room(double& theta, double tau, bool holdable, int& k_out, int& s_out) const {
   // Steps of one outer cell against the rotation, up to two turns. Columns
   // the map (col_, at t_map_) shows full are passed over in one integer
   // scan; the first one it shows with room is checked exactly (ncol()), and
@@ -1735,10 +1736,12 @@ bool LayerSim::toe_ward_room(double& theta, double tau, bool holdable, int& k_ou
     i += n;
     theta -= n * step;
     if (col_[s0] >= n_open_) break;
-    const int kk = ncol(theta, tau);
+    int below, sk;  // sk = slot_of(kk, theta, tau) where kk < n_open
+    const int kk = ncol_at(theta, tau, below, sk);
     if (kk >= n_open_) continue;
-    if (holdable && past_flight_angle(kk, slot_of(kk, theta, tau), tau)) continue;
+    if (holdable && past_flight_angle(kk, sk, tau)) continue;
     k_out = kk;
+    s_out = sk;
     return true;
   }
   return false;
@@ -1778,10 +1781,10 @@ void LayerSim::place(int id, int k, int s, double tau) {
   // room at a place its layer can hold.
   if (past_flight_dir(k, cf, sf)) {
     double theta = slot_angle(k, s, tau);
-    int kk;
-    if (toe_ward_room(theta, tau, true, kk)) {
+    int kk, sk;
+    if (toe_ward_room(theta, tau, true, kk, sk)) {
       k = kk;
-      s = slot_of(kk, theta, tau);
+      s = sk;
       slot_dir(k, s, tau, cf, sf);
     }
     roll();
