@@ -339,7 +339,7 @@ class LayerSim {
   void relax_candidates(double tau);
   /// Whether the top of the column above outer cell s, h = col_[s] > 0 high,
   /// may roll at tau, once the cheap first look of relax_candidates() let it
-  /// through (h_min: the smallest column within relax_reach_, at most n_open).
+  /// through (h_min: the smallest column within relax_min_reach_, at most n_open).
   bool relax_candidate_exact(int s, int h, int h_min, double tau) const;
   /// For relax_candidate_exact(): the top of the column above outer cell s
   /// (h high) is (k, st) at (x, y) and cannot roll by the repose rule at tau.
@@ -535,6 +535,7 @@ class LayerSim {
   std::vector<std::uint64_t> sup_bits_;     // slots to check, bits as occ_bits_ (a list and flags until 2026-12-05)
   std::vector<int> colmin_;                 // scratch of relax_surface(): window minima of col_
   int relax_reach_ = 3;                     // [outer cells] how far a move can change what roll_target() sees
+  int relax_min_reach_ = 3;                 // [outer cells] half-width of colmin_'s window
   int col_m_ = 1;                           // half-width m of that window [slots]
   double t_map_ = 0;                        // [s] time of the column map col_
   double t_win_ = 0;                        // [s] time of its window maxima colwin_
@@ -1864,7 +1865,7 @@ void LayerSim::relax_surface(double tau) {
   const int nw = (S0 + 63) / 64;
   relax_cur_.assign(nw, 0);
   relax_next_.assign(nw, 0);
-  window_extreme(col_, relax_reach_, false, colmin_);
+  window_extreme(col_, relax_min_reach_, false, colmin_);
   if (incremental_) relax_candidates(tau);
   else bits_set(relax_cur_, 0, S0 - 1);
   auto mark = [&](int c) {
@@ -1917,7 +1918,7 @@ void LayerSim::relax_surface(double tau) {
         if (averaging_ && tau >= t_avg0_) energy_ += m_ * kGravity * (y0 - elem_y_entry_[id]);
         leave_slot(id, k, s, tau);
         place(id, kn, sn, tau);
-        mark(s0);
+        mark(slot_of(0, slot_angle(k, s, tau), tau));  // the cell left (its centre: see relax_reach_)
         mark(slot_of(0, slot_angle(kn, sn, tau), tau));
         if (elem_layer_[id] >= 0) mark(slot_of(0, slot_angle(elem_layer_[id], elem_slot_[id], tau), tau));
       }
@@ -2076,12 +2077,12 @@ __attribute__((always_inline)) inline bool LayerSim::relax_candidate_exact(int s
   // of cell s: the map is fresh); the cheap first look (relax_candidates())
   // has let it through.
   //
-  // Bounds used below: at any angle within relax_reach_ outer cells of s the
+  // Bounds used below: at any angle within relax_min_reach_ outer cells of s the
   // top found by ncol() is at least the smallest column height h_min there
   // (every cell of layer j < h_min is occupied at the outer-cell centres, and
   // each cell of layer j contains one of them), so a cell an element could
   // roll into lies between the radii of layers h_min and n_open - 1.
-  // h_min = min(n_open, colmin_[s]), over s +- relax_reach_.
+  // h_min = min(n_open, colmin_[s]), over s +- relax_min_reach_.
   //
   // The first look, from the direction of the column's centre (cheap): the
   // top's slot is within half its cell plus half an outer cell of it, so it
@@ -2758,12 +2759,33 @@ ChargeResult LayerSim::run() {
   col_full_ = sup_full_ = true;
   maps_ready_ = true;
   r_open_min_ = R_eff_ - n_open_ * d_;
-  // roll_target() looks one cell of the top's layer to each side and one
-  // diameter below it; a cell of layer k spans S_0 / S_k outer cells. The
-  // partial layer of version 1.2 may have only a few wide cells, so the reach
-  // can exceed half the ring: it is then the whole ring (relax_surface()
-  // marks each column once).
-  relax_reach_ = std::min(static_cast<int>(std::ceil(3.0 * L_[0].S / L_[n_open_ - 1].S)) + 1, L_[0].S / 2);
+  // roll_target() for the top (k, s) of the column at outer cell s0 looks
+  // at the cells of every layer at the angles of that column's centre, of
+  // the centres of the cells of layer k next to s (one delta_k each side of
+  // the centre of s, which is within delta_k / 2 of the column's) and of the
+  // point one diameter below the centre of s (within asin(d / r_k), and
+  // fast_atan2()'s 1e-5 rad): all within P of the column's centre. A move
+  // marks the outer cells round the outer cell of the centre of each cell
+  // it changed (relax_surface()): a cell of layer m read at angle phi has
+  // its centre within delta_m / 2 of phi, which is within delta_0 / 2 of its
+  // outer cell's centre, so a reach of P + delta_max / 2 + delta_0 / 2 marks
+  // every column that reads it. The window minima bound the tops at those
+  // angles (relax_candidate_exact()) from the outer cells within P +
+  // delta_max (each cell of a layer holds an outer cell's centre; 3 delta_max
+  // for both until 2026-12-05). The partial layer of version 1.2 may have
+  // only a few wide cells, so the reach can exceed half the ring: it is then
+  // the whole ring (relax_surface() marks each column once).
+  {
+    double P = 0, d_max = 0;
+    for (int k = 0; k < n_open_; ++k) {
+      const double dk = L_[k].delta;
+      P = std::max({P, 1.5 * dk, 0.5 * dk + std::asin(std::min(1.0, d_ / L_[k].r)) + 1e-4});
+      d_max = std::max(d_max, dk);
+    }
+    const double d0 = L_[0].delta, margin = 1e-4;
+    relax_reach_ = std::min(static_cast<int>((P + 0.5 * d_max + 0.5 * d0 + margin) / d0) + 1, L_[0].S / 2);
+    relax_min_reach_ = std::min(static_cast<int>((P + d_max + margin) / d0) + 1, L_[0].S / 2);
+  }
   cos0_.resize(L_[0].S);
   sin0_.resize(L_[0].S);
   for (int s = 0; s < L_[0].S; ++s) {
