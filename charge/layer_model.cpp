@@ -8,6 +8,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <functional>
 #include <limits>
 #include <numeric>
@@ -227,14 +230,34 @@ class LayerSim {
   /// start of the step and sorted once; the few that arise during it
   /// (landings found, launches) are inserted in order.
   enum EventKind { kDepart = 0, kLand = 1, kCheck = 2 };
+  /// (t, kind, index) as one 128-bit unsigned key, compared in one go: the
+  /// high word t's bits mapped to an unsigned order (sign bit flipped for
+  /// t >= 0, all bits for t < 0: the order of the doubles, and reversible, so
+  /// t() gives t back), the low word kind and index. The same order as
+  /// comparing t, then kind, then index: -0 is taken as +0 (t + 0.0), equal as
+  /// the doubles compare (no event time is -0 or NaN: they are sums with the
+  /// step's start t0 >= +0).
   struct StepEvent {
-    double t;
-    int kind, index;
+    std::uint64_t tkey, tie;
+    StepEvent(double t_, int kind_, int index_)
+        : tie((static_cast<std::uint64_t>(kind_) << 32) | static_cast<std::uint32_t>(index_)) {
+      const double t0 = t_ + 0.0;  // -0 -> +0, every other value unchanged
+      std::uint64_t b;
+      std::memcpy(&b, &t0, sizeof b);
+      tkey = b ^ (b >> 63 ? ~std::uint64_t{0} : std::uint64_t{1} << 63);
+    }
+    double t() const {
+      const std::uint64_t b = tkey ^ (tkey >> 63 ? std::uint64_t{1} << 63 : ~std::uint64_t{0});
+      double x;
+      std::memcpy(&x, &b, sizeof x);
+      return x;
+    }
+    int kind() const { return static_cast<int>(tie >> 32); }
+    int index() const { return static_cast<int>(static_cast<std::uint32_t>(tie)); }
   };
+  __extension__ typedef unsigned __int128 EventKey;
   static bool event_after(const StepEvent& x, const StepEvent& y) {
-    if (x.t != y.t) return x.t > y.t;
-    if (x.kind != y.kind) return x.kind > y.kind;
-    return x.index > y.index;
+    return ((static_cast<EventKey>(x.tkey) << 64) | x.tie) > ((static_cast<EventKey>(y.tkey) << 64) | y.tie);
   }
   void push_event(const StepEvent& e) {
     events_.insert(std::lower_bound(events_.begin(), events_.end(), e, event_after), e);
@@ -270,9 +293,9 @@ class LayerSim {
   /// From theta, steps against the rotation (one outer cell at a time) to
   /// the first column with room below n_open (and, with `holdable`, whose
   /// top cell its layer can hold), passing over the columns the column map
-  /// shows full; theta and k_out are that column's angle and top. False if
-  /// there is none.
-  bool toe_ward_room(double& theta, double tau, bool holdable, int& k_out) const;
+  /// shows full; theta and k_out are that column's angle and top, s_out =
+  /// slot_of(k_out, theta, tau). False if there is none.
+  bool toe_ward_room(double& theta, double tau, bool holdable, int& k_out, int& s_out) const;
   /// The slot is on the rising side beyond the flight angle of its layer.
   bool past_flight_angle(int k, int s, double tau) const;
   /// The same from the slot's direction (c, sn) = slot_dir(k, s, tau), where
@@ -339,7 +362,7 @@ class LayerSim {
   void relax_candidates(double tau);
   /// Whether the top of the column above outer cell s, h = col_[s] > 0 high,
   /// may roll at tau, once the cheap first look of relax_candidates() let it
-  /// through (h_min: the smallest column within relax_reach_, at most n_open).
+  /// through (h_min: the smallest column within relax_min_reach_, at most n_open).
   bool relax_candidate_exact(int s, int h, int h_min, double tau) const;
   /// For relax_candidate_exact(): the top of the column above outer cell s
   /// (h high) is (k, st) at (x, y) and cannot roll by the repose rule at tau.
@@ -535,6 +558,7 @@ class LayerSim {
   std::vector<std::uint64_t> sup_bits_;     // slots to check, bits as occ_bits_ (a list and flags until 2026-12-05)
   std::vector<int> colmin_;                 // scratch of relax_surface(): window minima of col_
   int relax_reach_ = 3;                     // [outer cells] how far a move can change what roll_target() sees
+  int relax_min_reach_ = 3;                 // [outer cells] half-width of colmin_'s window
   int col_m_ = 1;                           // half-width m of that window [slots]
   double t_map_ = 0;                        // [s] time of the column map col_
   double t_win_ = 0;                        // [s] time of its window maxima colwin_
@@ -1511,20 +1535,20 @@ void LayerSim::check_flights(double t1) {
   while (!events_.empty()) {
     const StepEvent ev = events_.back();
     events_.pop_back();
-    if (ev.kind == kDepart) {
-      const DepartureEvent& e = dep_events_[ev.index];
+    if (ev.kind() == kDepart) {
+      const DepartureEvent& e = dep_events_[ev.index()];
       const int id = occ(e.j, e.s);
       if (id < 0) continue;
       // an element placed there after the slot crossed leaves when it came
       launch(e.j, e.s, std::max(e.t, elem_t_slot_[id]), e.seg);  // schedules its flight
       continue;
     }
-    const int i = ev.index;
+    const int i = ev.index();
     Flight& f = flights_[i];
-    if (ev.kind == kCheck) {
+    if (ev.kind() == kCheck) {
       // the path up to the next event (at least one interval), then the
       // flight waits for its next interval or its landing
-      double t_lim = events_.empty() ? t1 : std::min(t1, events_.back().t);
+      double t_lim = events_.empty() ? t1 : std::min(t1, events_.back().t());
       // at least one interval: check_flight() walks whole intervals, but
       // check_flight_drag() ends one at t_lim, so it gets one drag step (1 ms)
       t_lim = std::max(t_lim, drag_on_ ? next_check(f) + 1e-3 : next_up(next_check(f)));
@@ -1641,7 +1665,8 @@ void LayerSim::deposit(int id, double theta, double tau, const V& v_land) {
   if (k >= n_open_) {
     // No room inside the allowed layers (version 1.2: inside r_i): the
     // element is moved towards the toe, against the rotation (thesis §4.6.2).
-    if (!toe_ward_room(theta, tau, false, k)) throw SimulationError("layer model: no room left for a landing element");
+    int sk;
+    if (!toe_ward_room(theta, tau, false, k, sk)) throw SimulationError("layer model: no room left for a landing element");
   }
   // Foot stability, 1: momentum (thesis §4.4.2, Radziszewski 1998). The
   // element keeps the part of its velocity along the charge surface relative
@@ -1684,7 +1709,7 @@ void LayerSim::deposit(int id, double theta, double tau, const V& v_land) {
   place(id, k, slot_of(k, theta, tau), tau);
 }
 
-bool LayerSim::toe_ward_room(double& theta, double tau, bool holdable, int& k_out) const {
+bool LayerSim::toe_ward_room(double& theta, double tau, bool holdable, int& k_out, int& s_out) const {
   // Steps of one outer cell against the rotation, up to two turns. Columns
   // the map (col_, at t_map_) shows full are passed over in one integer
   // scan; the first one it shows with room is checked exactly (ncol()), and
@@ -1706,6 +1731,23 @@ bool LayerSim::toe_ward_room(double& theta, double tau, bool holdable, int& k_ou
       if (s0 == 0) s0 = S0;  // the next step wraps
       const int stop = std::max(0, s0 - (lim - n));  // the lowest cell this run may reach
       int p = s0 - 1;
+#if defined(__SSE2__)
+      // sixteen cells a test (the runs of full columns are long: some 40
+      // cells on average for media size -25 %); the block with room is then
+      // found cell by cell below, as without it
+      {
+        const __m128i full = _mm_set1_epi32(n_open - 1);  // col > n_open - 1: full
+        while (p - 16 >= stop) {
+          const __m128i* q = reinterpret_cast<const __m128i*>(col + p - 15);
+          const __m128i a = _mm_and_si128(_mm_cmpgt_epi32(_mm_loadu_si128(q), full),
+                                          _mm_cmpgt_epi32(_mm_loadu_si128(q + 1), full));
+          const __m128i b = _mm_and_si128(_mm_cmpgt_epi32(_mm_loadu_si128(q + 2), full),
+                                          _mm_cmpgt_epi32(_mm_loadu_si128(q + 3), full));
+          if (_mm_movemask_epi8(_mm_and_si128(a, b)) != 0xffff) break;
+          p -= 16;
+        }
+      }
+#endif
       while (p - 4 >= stop && std::min(std::min(col[p], col[p - 1]), std::min(col[p - 2], col[p - 3])) >= n_open) p -= 4;
       while (p > stop && col[p] >= n_open) --p;
       n += s0 - p;
@@ -1715,10 +1757,12 @@ bool LayerSim::toe_ward_room(double& theta, double tau, bool holdable, int& k_ou
     i += n;
     theta -= n * step;
     if (col_[s0] >= n_open_) break;
-    const int kk = ncol(theta, tau);
+    int below, sk;  // sk = slot_of(kk, theta, tau) where kk < n_open
+    const int kk = ncol_at(theta, tau, below, sk);
     if (kk >= n_open_) continue;
-    if (holdable && past_flight_angle(kk, slot_of(kk, theta, tau), tau)) continue;
+    if (holdable && past_flight_angle(kk, sk, tau)) continue;
     k_out = kk;
+    s_out = sk;
     return true;
   }
   return false;
@@ -1758,10 +1802,10 @@ void LayerSim::place(int id, int k, int s, double tau) {
   // room at a place its layer can hold.
   if (past_flight_dir(k, cf, sf)) {
     double theta = slot_angle(k, s, tau);
-    int kk;
-    if (toe_ward_room(theta, tau, true, kk)) {
+    int kk, sk;
+    if (toe_ward_room(theta, tau, true, kk, sk)) {
       k = kk;
-      s = slot_of(kk, theta, tau);
+      s = sk;
       slot_dir(k, s, tau, cf, sf);
     }
     roll();
@@ -1864,7 +1908,7 @@ void LayerSim::relax_surface(double tau) {
   const int nw = (S0 + 63) / 64;
   relax_cur_.assign(nw, 0);
   relax_next_.assign(nw, 0);
-  window_extreme(col_, relax_reach_, false, colmin_);
+  window_extreme(col_, relax_min_reach_, false, colmin_);
   if (incremental_) relax_candidates(tau);
   else bits_set(relax_cur_, 0, S0 - 1);
   auto mark = [&](int c) {
@@ -1917,7 +1961,7 @@ void LayerSim::relax_surface(double tau) {
         if (averaging_ && tau >= t_avg0_) energy_ += m_ * kGravity * (y0 - elem_y_entry_[id]);
         leave_slot(id, k, s, tau);
         place(id, kn, sn, tau);
-        mark(s0);
+        mark(slot_of(0, slot_angle(k, s, tau), tau));  // the cell left (its centre: see relax_reach_)
         mark(slot_of(0, slot_angle(kn, sn, tau), tau));
         if (elem_layer_[id] >= 0) mark(slot_of(0, slot_angle(elem_layer_[id], elem_slot_[id], tau), tau));
       }
@@ -2076,12 +2120,12 @@ __attribute__((always_inline)) inline bool LayerSim::relax_candidate_exact(int s
   // of cell s: the map is fresh); the cheap first look (relax_candidates())
   // has let it through.
   //
-  // Bounds used below: at any angle within relax_reach_ outer cells of s the
+  // Bounds used below: at any angle within relax_min_reach_ outer cells of s the
   // top found by ncol() is at least the smallest column height h_min there
   // (every cell of layer j < h_min is occupied at the outer-cell centres, and
   // each cell of layer j contains one of them), so a cell an element could
   // roll into lies between the radii of layers h_min and n_open - 1.
-  // h_min = min(n_open, colmin_[s]), over s +- relax_reach_.
+  // h_min = min(n_open, colmin_[s]), over s +- relax_min_reach_.
   //
   // The first look, from the direction of the column's centre (cheap): the
   // top's slot is within half its cell plus half an outer cell of it, so it
@@ -2470,13 +2514,15 @@ double LayerSim::bed_clearance(double r, double theta, double tau) const {
     int s = static_cast<int>(wrap2pi(theta - (l0.phase + l0.omega * (t - t_step0_)) + 0.5 * l0.delta) * l0.inv_delta);
     return s >= S0 ? s - S0 : s;
   };
+  int s_win;
   // The window maxima (of the map at t_win) cover the rotation of every
   // layer over (t_win, tau + H] and two extra cells of growth by landings
   // meanwhile.
   {
     const double rot_slots = omega_ * ((tau - t_win_) + skip_H_) * l0.inv_delta;
     const double lateral = r * l0.delta * (col_m_ - 0.5 - rot_slots);
-    const int h = std::min(n_open_, colwin_[outer_slot(t_win_)] + 2);
+    s_win = outer_slot(t_win_);
+    const int h = std::min(n_open_, colwin_[s_win] + 2);
     const double radial = (R_eff_ - h * d_) - r;
     if (radial >= lateral || radial > 0.5 * d_) return std::min(radial, lateral);
   }
@@ -2488,22 +2534,24 @@ double LayerSim::bed_clearance(double r, double theta, double tau) const {
   const double rot_slots = omega_ * ((tau - t_map_) + skip_H_) * l0.inv_delta;
   const double cell = r * l0.delta;
   double best = cell * (col_m_ - 0.5 - rot_slots);
-  const int s = outer_slot(t_map_);
-  auto gap = [&](int i) { return (R_eff_ - std::min(n_open_, col_[i] + 2) * d_) - r; };
+  // (a map of the window maxima's time: the slot found above)
+  const int s = t_map_ == t_win_ ? s_win : outer_slot(t_map_);
+  auto gap = [&](int h) { return (R_eff_ - std::min(n_open_, h + 2) * d_) - r; };
   {
     const double a = cell * std::max(0.0, 0 - 0.5 - rot_slots);
     if (a >= best) return best;
-    best = std::min(best, std::max(gap(s), a));
+    best = std::min(best, std::max(gap(col_[s]), a));
   }
-  // the columns q cells either side (the one against the rotation first)
+  // the columns q cells either side: gap() falls as the column rises (each
+  // rounding is monotone), so min(max(gap(lo), a), max(gap(hi), a)) is
+  // max(gap(the higher column), a), the same bits with one gap
   int lo = s, hi = s;
   for (int q = 1; q <= col_m_; ++q) {
     const double a = cell * std::max(0.0, q - 0.5 - rot_slots);
     if (a >= best) break;
     lo = lo == 0 ? S0 - 1 : lo - 1;
     hi = hi == S0 - 1 ? 0 : hi + 1;
-    best = std::min(best, std::max(gap(lo), a));
-    best = std::min(best, std::max(gap(hi), a));
+    best = std::min(best, std::max(gap(std::max(col_[lo], col_[hi])), a));
   }
   return best;
 }
@@ -2545,6 +2593,13 @@ V LayerSim::pocket_push(int b, int n, double c, double sn, double C, double Fr_g
   return (C + Fr_g) * er - (Ft > 0 ? 1.0 : -1.0) * (gc * W_above - T_above) * et;
 }
 
+// sample() is arithmetic on doubles throughout: with AVX2 where the CPU has
+// it (a second copy, picked at load time) the three-operand forms spare the
+// register copies of SSE2. The same operations in the same order, and avx2
+// does not enable FMA, so the same results to the bit.
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+__attribute__((target_clones("avx2", "default")))
+#endif
 void LayerSim::sample(double tau, double w) {
   const double rot = mill_angle(tau);
   // --- flying elements, for the occupancy indicators (the en-masse ones
@@ -2565,6 +2620,21 @@ void LayerSim::sample(double tau, double w) {
   const double cr = std::cos(rot), sr = std::sin(rot);
   const double cp = std::cos(l0.phase), sp = std::sin(l0.phase);
   const double vslip_w = std::abs(omega_ - l0.omega);
+  // The bin and the contact ray of a slot (below) change only where its liner
+  // frame angle psi crosses a bin edge or a midpoint between contact rays:
+  // points z = psi * zk that are whole numbers (zk = 2 m / h, m rays per bin
+  // a power of two). psi, the atan2 of the rotated direction, is phase +
+  // s delta - rot up to fast_atan2's error (at most 6.93e-7 rad, found over
+  // the whole of [0, 1] in steps of 5e-9) and rounding (~1e-13 rad), so where
+  // that sum is more than kMargin from every such point both are read from
+  // it, the same integers without the atan2; the few slots nearer one (about
+  // 4 kMargin / ray spacing of them) take the atan2 as before. Off with
+  // model.incremental_maps = false, so that a test compares the two.
+  constexpr double kMargin = 4e-6;  // [rad]
+  const double zk = 2.0 * ride_.inv_contact_ray;
+  const double z0 = wrap2pi(l0.phase - rot), zm = incremental_ ? kMargin * zk : 1.0;
+  const int bin_shift = __builtin_ctz(2 * static_cast<unsigned>(ride_.contact_rays_per_bin));
+  const int bin_mask = ride_.n_bins - 1, ray_mask = static_cast<int>(ride_.contact_element.size()) - 1;
   V f_lifter(0, 0);
   for (int s = 0; s < S0; ++s) {
     const int n = col_[s];
@@ -2575,13 +2645,22 @@ void LayerSim::sample(double tau, double w) {
     const V er(c, sn), et(-sn, c);
     const double Fr_g = -W * kGravity * sn;  // outward radial gravity (eq. 4.10 / 5.2)
     const double Ft = W * kGravity * c;      // along the rotation, held by the liner (eq. 4.11)
-    // liner frame angle of the slot: atan2 of the rotated direction
-    const double psi = fast_atan2(sn * cr - c * sr, c * cr + sn * sr);
-    const int b = ride_.bin(psi);
-    // the element the disc touches at psi: the nearest contact ray's (the
-    // bin's smaller-edge element moved the loads up to a bin towards the
-    // crest: docs/models/layer.md §Liner loads, "Where a load lands")
-    const int e = ride_.contact(psi);
+    // liner frame angle of the slot: atan2 of the rotated direction; e: the
+    // element the disc touches at psi, the nearest contact ray's (the bin's
+    // smaller-edge element moved the loads up to a bin towards the crest:
+    // docs/models/layer.md §Liner loads, "Where a load lands")
+    const double z = (z0 + s * l0.delta) * zk;  // >= 0
+    const int iz = static_cast<int>(z);
+    const double fz = z - iz;  // exact
+    int b, e;
+    if (fz > zm && fz < 1.0 - zm) {
+      b = (iz >> bin_shift) & bin_mask;
+      e = ride_.contact_element[static_cast<size_t>(((iz + 1) >> 1) & ray_mask)];
+    } else {
+      const double psi = fast_atan2(sn * cr - c * sr, c * cr + sn * sr);
+      b = ride_.bin(psi);
+      e = ride_.contact(psi);
+    }
     // force of the column on the liner; with pocket loads the faces holding
     // the pocket take some of its tangential part (a call of its own, so that
     // the default loop keeps its code)
@@ -2758,12 +2837,33 @@ ChargeResult LayerSim::run() {
   col_full_ = sup_full_ = true;
   maps_ready_ = true;
   r_open_min_ = R_eff_ - n_open_ * d_;
-  // roll_target() looks one cell of the top's layer to each side and one
-  // diameter below it; a cell of layer k spans S_0 / S_k outer cells. The
-  // partial layer of version 1.2 may have only a few wide cells, so the reach
-  // can exceed half the ring: it is then the whole ring (relax_surface()
-  // marks each column once).
-  relax_reach_ = std::min(static_cast<int>(std::ceil(3.0 * L_[0].S / L_[n_open_ - 1].S)) + 1, L_[0].S / 2);
+  // roll_target() for the top (k, s) of the column at outer cell s0 looks
+  // at the cells of every layer at the angles of that column's centre, of
+  // the centres of the cells of layer k next to s (one delta_k each side of
+  // the centre of s, which is within delta_k / 2 of the column's) and of the
+  // point one diameter below the centre of s (within asin(d / r_k), and
+  // fast_atan2()'s 1e-5 rad): all within P of the column's centre. A move
+  // marks the outer cells round the outer cell of the centre of each cell
+  // it changed (relax_surface()): a cell of layer m read at angle phi has
+  // its centre within delta_m / 2 of phi, which is within delta_0 / 2 of its
+  // outer cell's centre, so a reach of P + delta_max / 2 + delta_0 / 2 marks
+  // every column that reads it. The window minima bound the tops at those
+  // angles (relax_candidate_exact()) from the outer cells within P +
+  // delta_max (each cell of a layer holds an outer cell's centre; 3 delta_max
+  // for both until 2026-12-05). The partial layer of version 1.2 may have
+  // only a few wide cells, so the reach can exceed half the ring: it is then
+  // the whole ring (relax_surface() marks each column once).
+  {
+    double P = 0, d_max = 0;
+    for (int k = 0; k < n_open_; ++k) {
+      const double dk = L_[k].delta;
+      P = std::max({P, 1.5 * dk, 0.5 * dk + std::asin(std::min(1.0, d_ / L_[k].r)) + 1e-4});
+      d_max = std::max(d_max, dk);
+    }
+    const double d0 = L_[0].delta, margin = 1e-4;
+    relax_reach_ = std::min(static_cast<int>((P + 0.5 * d_max + 0.5 * d0 + margin) / d0) + 1, L_[0].S / 2);
+    relax_min_reach_ = std::min(static_cast<int>((P + d_max + margin) / d0) + 1, L_[0].S / 2);
+  }
   cos0_.resize(L_[0].S);
   sin0_.resize(L_[0].S);
   for (int s = 0; s < L_[0].S; ++s) {
