@@ -557,8 +557,9 @@ class LayerSim {
   std::vector<int> col_from_;               // per outer slot marked: the lowest layer whose cell changed
   std::vector<std::uint64_t> sup_bits_;     // slots to check, bits as occ_bits_ (a list and flags until 2026-12-05)
   std::vector<int> colmin_;                 // scratch of relax_surface(): window minima of col_
-  int relax_reach_ = 3;                     // [outer cells] how far a move can change what roll_target() sees
   int relax_min_reach_ = 3;                 // [outer cells] half-width of colmin_'s window
+  std::vector<int> relax_reach_m_;          // [outer cells] how far a move that changed a cell of layer m can
+                                            //     change what roll_target() sees
   int col_m_ = 1;                           // half-width m of that window [slots]
   double t_map_ = 0;                        // [s] time of the column map col_
   double t_win_ = 0;                        // [s] time of its window maxima colwin_
@@ -1896,7 +1897,7 @@ void LayerSim::relax_surface(double tau) {
   // candidates of the fresh column map (relax_candidates(), a conservative
   // test), and a move marks the columns within reach of its source and its
   // destination (the neighbours roll_target() looks at lie within
-  // relax_reach_ outer cells) for the rest of this pass and the next. Since a
+  // relax_reach_m_ outer cells) for the rest of this pass and the next. Since a
   // column whose surroundings did not change cannot start to roll, this
   // visits every column the full sweep would move, in the same order.
   //
@@ -1911,14 +1912,15 @@ void LayerSim::relax_surface(double tau) {
   window_extreme(col_, relax_min_reach_, false, colmin_);
   if (incremental_) relax_candidates(tau);
   else bits_set(relax_cur_, 0, S0 - 1);
-  auto mark = [&](int c) {
-    if (2 * relax_reach_ + 1 >= S0) {  // the reach covers the ring
+  auto mark = [&](int c, int m) {
+    const int reach = relax_reach_m_[m];
+    if (2 * reach + 1 >= S0) {  // the reach covers the ring
       bits_set(relax_cur_, 0, S0 - 1);
       bits_set(relax_next_, 0, S0 - 1);
       return;
     }
     // c - reach .. c + reach, circularly (shorter than the ring)
-    const int lo = c - relax_reach_, hi = c + relax_reach_;
+    const int lo = c - reach, hi = c + reach;
     if (lo < 0) {
       bits_set(relax_cur_, lo + S0, S0 - 1);
       bits_set(relax_next_, lo + S0, S0 - 1);
@@ -1961,9 +1963,9 @@ void LayerSim::relax_surface(double tau) {
         if (averaging_ && tau >= t_avg0_) energy_ += m_ * kGravity * (y0 - elem_y_entry_[id]);
         leave_slot(id, k, s, tau);
         place(id, kn, sn, tau);
-        mark(slot_of(0, slot_angle(k, s, tau), tau));  // the cell left (its centre: see relax_reach_)
-        mark(slot_of(0, slot_angle(kn, sn, tau), tau));
-        if (elem_layer_[id] >= 0) mark(slot_of(0, slot_angle(elem_layer_[id], elem_slot_[id], tau), tau));
+        mark(slot_of(0, slot_angle(k, s, tau), tau), k);  // the cell left (its centre: see relax_reach_m_)
+        mark(slot_of(0, slot_angle(kn, sn, tau), tau), kn);
+        if (elem_layer_[id] >= 0) mark(slot_of(0, slot_angle(elem_layer_[id], elem_slot_[id], tau), tau), elem_layer_[id]);
       }
       // The column is stable as things stand: the next pass need not look at
       // it again unless a later move within reach marks it anew (a visit
@@ -2846,8 +2848,9 @@ ChargeResult LayerSim::run() {
   // marks the outer cells round the outer cell of the centre of each cell
   // it changed (relax_surface()): a cell of layer m read at angle phi has
   // its centre within delta_m / 2 of phi, which is within delta_0 / 2 of its
-  // outer cell's centre, so a reach of P + delta_max / 2 + delta_0 / 2 marks
-  // every column that reads it. The window minima bound the tops at those
+  // outer cell's centre, so a reach of P + delta_m / 2 + delta_0 / 2 marks
+  // every column that reads it (relax_reach_m_; P + delta_max / 2 + delta_0
+  // / 2 for every layer at e128a72). The window minima bound the tops at those
   // angles (relax_candidate_exact()) from the outer cells within P +
   // delta_max (each cell of a layer holds an outer cell's centre; 3 delta_max
   // for both until 2026-12-05). The partial layer of version 1.2 may have
@@ -2861,8 +2864,10 @@ ChargeResult LayerSim::run() {
       d_max = std::max(d_max, dk);
     }
     const double d0 = L_[0].delta, margin = 1e-4;
-    relax_reach_ = std::min(static_cast<int>((P + 0.5 * d_max + 0.5 * d0 + margin) / d0) + 1, L_[0].S / 2);
     relax_min_reach_ = std::min(static_cast<int>((P + d_max + margin) / d0) + 1, L_[0].S / 2);
+    relax_reach_m_.assign(n_open_, 0);
+    for (int m = 0; m < n_open_; ++m)
+      relax_reach_m_[m] = std::min(static_cast<int>((P + 0.5 * L_[m].delta + 0.5 * d0 + margin) / d0) + 1, L_[0].S / 2);
   }
   cos0_.resize(L_[0].S);
   sin0_.resize(L_[0].S);
