@@ -65,8 +65,9 @@ struct ModelSpec {
   double max_courant = 0;               // [-] studies only: shell travel per step / media diameter allowed
                                         //     before sub-stepping (0: the model's own limit)
   bool incremental_maps = true;         // tests only: false makes every column map, support sweep and
-                                        //     relaxation pass of the layer model a full one (the reference
-                                        //     its incremental bookkeeping must reproduce exactly)
+                                        //     relaxation pass of the layer model a full one, and sample()
+                                        //     take every slot's liner angle by atan2 (the references its
+                                        //     incremental bookkeeping and shortcuts must reproduce exactly)
   DemSpec dem;                    // the [dem] section: parameters of the DEM model
 };
 
