@@ -2635,8 +2635,7 @@ void LayerSim::sample(double tau, double w) {
   constexpr double kMargin = 4e-6;  // [rad]
   const double zk = 2.0 * ride_.inv_contact_ray;
   const double z0 = wrap2pi(l0.phase - rot), zm = incremental_ ? kMargin * zk : 1.0;
-  const int bin_shift = __builtin_ctz(2 * static_cast<unsigned>(ride_.contact_rays_per_bin));
-  const int bin_mask = ride_.n_bins - 1, ray_mask = static_cast<int>(ride_.contact_element.size()) - 1;
+  const LinerRideTable::HalfRays half_rays = ride_.half_rays();
   V f_lifter(0, 0);
   for (int s = 0; s < S0; ++s) {
     const int n = col_[s];
@@ -2656,8 +2655,8 @@ void LayerSim::sample(double tau, double w) {
     const double fz = z - iz;  // exact
     int b, e;
     if (fz > zm && fz < 1.0 - zm) {
-      b = (iz >> bin_shift) & bin_mask;
-      e = ride_.contact_element[static_cast<size_t>(((iz + 1) >> 1) & ray_mask)];
+      b = half_rays.bin(iz);
+      e = half_rays.contact(iz);
     } else {
       const double psi = fast_atan2(sn * cr - c * sr, c * cr + sn * sr);
       b = ride_.bin(psi);

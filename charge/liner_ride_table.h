@@ -65,6 +65,23 @@ struct LinerRideTable {
     const int j = floor_int(psi * inv_contact_ray + 0.5);
     return contact_element[static_cast<size_t>(j & (static_cast<int>(contact_element.size()) - 1))];
   }
+  /// bin() and contact() of an angle psi >= 0 from its half-ray index
+  /// iz = floor(psi / (h / 2 m)), for a psi strictly between two half-ray
+  /// points iz h / 2 m: the bin edges and the midpoints between rays are all
+  /// such points, so the whole interval has one bin and one nearest ray.
+  /// (n_bins and 2 m are powers of two: the shift and the masks wrap psi
+  /// beyond 2 pi too.) A copy of the layout, taken once before a loop, so
+  /// that the loop keeps it in registers (LayerSim::sample()).
+  struct HalfRays {
+    int shift, bin_mask, ray_mask;  // log2(2 m), n_bins - 1, n_bins m - 1
+    const int* contact_element;
+    int bin(int iz) const { return (iz >> shift) & bin_mask; }
+    int contact(int iz) const { return contact_element[((iz + 1) >> 1) & ray_mask]; }
+  };
+  HalfRays half_rays() const {
+    return {__builtin_ctz(2u * static_cast<unsigned>(contact_rays_per_bin)), n_bins - 1,
+            static_cast<int>(contact_element.size()) - 1, contact_element.data()};
+  }
   /// Arc [m] along the shell between contact rays.
   double contact_spacing_m(double shell_radius_m) const { return shell_radius_m * bin_rad / contact_rays_per_bin; }
   /// Ride point at edge b (liner frame) [m].

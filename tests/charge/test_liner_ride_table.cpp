@@ -177,3 +177,29 @@ TEST_CASE("the contact rays name the element the disc touches, checked against e
     check_contact_rays(s, t, a, per_segment * 5, per_segment * 6 + 3);
   }
 }
+
+TEST_CASE("a half-ray index gives the bin and the contact ray that the angle gives", "[charge][ride]") {
+  // LinerRideTable::half_rays(), used by LayerSim::sample() where it knows the
+  // index without an atan2: for any psi strictly between two half-ray points
+  // (and beyond 2 pi, which the masks wrap) the same bin and element as bin()
+  // and contact(). A wrong shift (log2 m instead of log2 2 m) or rounding of
+  // the ray (iz / 2 instead of (iz + 1) / 2) fails here.
+  const Config c = load_default_config();
+  const LinerSurface s = build_liner_surface(c.mill, c.liner);
+  for (const double spacing : {0.0, 0.002, 0.0005}) {
+    const LinerRideTable t = build_liner_ride_table(s, 0.5 * c.charge.ball_diameter_m, 4, spacing);
+    const LinerRideTable::HalfRays hr = t.half_rays();
+    const double step = 0.5 / t.inv_contact_ray;  // [rad] between half-ray points
+    const int n_half = 2 * static_cast<int>(t.contact_element.size());
+    int checked = 0, mismatched = 0;
+    for (int iz = 0; iz < 2 * n_half; iz += 1 + iz % 7)  // two turns, a few points in every ray
+      for (const double f : {1e-6, 0.3, 0.5, 0.7, 1.0 - 1e-6}) {
+        const double psi = (iz + f) * step;
+        ++checked;
+        if (hr.bin(iz) != t.bin(psi) || hr.contact(iz) != t.contact(psi)) ++mismatched;
+      }
+    INFO("contact spacing " << spacing << " m, " << t.contact_rays_per_bin << " rays per bin");
+    CHECK(checked > 5000);
+    CHECK(mismatched == 0);
+  }
+}
