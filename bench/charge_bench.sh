@@ -10,7 +10,8 @@
 # accumulates loads and impacts); one thread (the model is single-threaded);
 # median of RUNS runs per case, the runs going round all cases in turn so that
 # a burst of other work on this shared machine spreads over the cases.
-# REVOLUTIONS 0 keeps the model's default (2 averaged after 3 settling).
+# REVOLUTIONS 0 keeps the model's default (2 averaged after 1 settling); 51
+# gives the thesis' run length (§3.2.2: 300 s of the Qiu mill, 52 revolutions).
 # Prints the machine, the load average before and after, and the table.
 set -euo pipefail
 cd "$(dirname "$0")/.."
