@@ -321,6 +321,24 @@ class LayerSim {
   /// is slot_dir(k, s, tau) on entry and, where it rolls, slot_dir(kn, sn,
   /// tau) on return (the values roll_target() computed for the target).
   bool roll_target(int k, int s, double tau, int& kn_out, int& sn_out, double& c, double& sn_th);
+  /// The top that the roll rules compare the top (k, s) with in the column
+  /// at angle thn (a neighbour's centre): its cell (kn, sn), direction (cn,
+  /// snn) = slot_dir(kn, sn, tau) and position (xn, yn). False where there is
+  /// none: the column is full, or its top is (k, s) itself, or, unless
+  /// `onto_liner`, it is the liner (k = kn = 0: there the lifters hold it).
+  /// One place for roll_target() and repose_exact().
+  bool neighbour_top(int k, int s, double thn, double tau, bool onto_liner, int& kn, int& sn, double& cn,
+                     double& snn, double& xn, double& yn) const {
+    int sb;
+    kn = ncol_at(thn, tau, sb, sn);
+    if (kn >= n_open_) return false;
+    if (kn == 0 && k == 0 && !onto_liner) return false;
+    if (kn == k && sn == s) return false;
+    slot_dir(kn, sn, tau, cn, snn);
+    xn = L_[kn].r * cn;
+    yn = L_[kn].r * snn;
+    return true;
+  }
   /// ncol(theta, tau), which also hands back the slots it found on the way:
   /// at = slot_of(h, theta, tau) if h < n_open, below = slot_of(h - 1, theta,
   /// tau) if h > 0 (the same values; the foot-stability rules need them).
@@ -1838,17 +1856,12 @@ __attribute__((always_inline)) inline bool LayerSim::roll_target(int k, int s, d
   for (double dir : {-1.0, 1.0}) {
     if (!past && !repose) break;
     if (past && dir > 0) continue;  // past the flight angle: only down the rising side
-    const double thn = th + dir * L_[k].delta;
+    int kn, sn;
+    double cn, snn, xn, yn;
     occ(k, s) = -1;  // the neighbouring column without this element
-    int sb, sn;  // sn = slot_of(kn, thn, tau) where kn < n_open
-    const int kn = ncol_at(thn, tau, sb, sn);
+    const bool there = neighbour_top(k, s, th + dir * L_[k].delta, tau, past, kn, sn, cn, snn, xn, yn);
     occ(k, s) = id;
-    if (kn >= n_open_) continue;
-    if (kn == 0 && k == 0 && !past) continue;  // on the liner the lifters hold it
-    if (kn == k && sn == s) continue;
-    double cn, snn;
-    slot_dir(kn, sn, tau, cn, snn);
-    const double xn = L_[kn].r * cn, yn = L_[kn].r * snn;
+    if (!there) continue;
     const double drop = y - yn, run = std::abs(x - xn);
     if ((past || (repose && drop > tan_g_ * run)) && yn < best_y) {
       best_y = yn;
@@ -2186,15 +2199,9 @@ bool LayerSim::repose_exact(int s, int h, int k, int st, double x, double y, dou
   // roll_target()'s repose rule on it (past is false), the same values
   const double th = slot_angle(k, st, tau);
   for (double dir : {-1.0, 1.0}) {
-    const double thn = th + dir * L_[k].delta;
-    int sbn, sn;
-    const int kn = ncol_at(thn, tau, sbn, sn);
-    if (kn >= n_open_) continue;
-    if (kn == 0 && k == 0) continue;
-    if (kn == k && sn == st) continue;
-    double cn, snn;
-    slot_dir(kn, sn, tau, cn, snn);
-    const double xn = L_[kn].r * cn, yn = L_[kn].r * snn;
+    int kn, sn;
+    double cn, snn, xn, yn;
+    if (!neighbour_top(k, st, th + dir * L_[k].delta, tau, false, kn, sn, cn, snn, xn, yn)) continue;
     const double drop = y - yn, run = std::abs(x - xn);
     if (drop > tan_g_ * run && yn < y) return false;
   }
