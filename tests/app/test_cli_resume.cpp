@@ -168,6 +168,7 @@ TEST_CASE("a forecast killed with SIGKILL at random moments and resumed ends as 
     CHECK_FALSE(fs::exists(out / "checkpoint.h5"));  // removed once the run is complete
     CHECK(temporaries(out).empty());
   }
+  fs::remove_all(dir);
 }
 
 // Issue 7 §5: a simulation that fails part-way ends with exit 3 and a

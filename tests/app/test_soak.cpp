@@ -162,6 +162,7 @@ void soak(int runs, unsigned seed) {
             << "between two records was " << max_crest_rise * 1e3 << " mm");
   // most random mills wear out within the 50,000 h horizon
   CHECK(reached >= runs / 2);
+  fs::remove_all(dir);  // a failed run's mill is in its INFO above
 }
 
 }  // namespace
@@ -242,4 +243,5 @@ min_lifter_height_m = 0.1894413861069493
     CHECK(crest[i] <= crest[i - 1] + 1e-6);
     CHECK(mass[i] <= mass[i - 1] * (1 + 1e-12));
   }
+  fs::remove_all(dir);
 }
