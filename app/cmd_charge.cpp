@@ -155,6 +155,12 @@ int run_charge(const ChargeOptions& o) {
                                               "--model layer",
                                               o.variant, c.model.charge));
   const ChargeModelEntry& entry = find_charge_model(c.model.charge);
+  // a closed-form model has no run length: refused, not ignored (as --variant)
+  if (o.revolutions && !entry.runs_in_time)
+    throw InputError("--revolutions", fmt::format("--revolutions {}: the {} model is closed-form and moves no charge; "
+                                                  "--revolutions sets the run length of the models that do (layer, "
+                                                  "dem): drop it, or choose one of them with --model",
+                                                  *o.revolutions, entry.name));
   if (!o.out.empty()) check_output_dir_writable(o.out, {"charge.h5"});
   const LinerSurface s = build_liner_surface(c.mill, c.liner);
   ChargeInput in;
@@ -221,7 +227,7 @@ int run_charge(const ChargeOptions& o) {
     std::cout << fmt::format("Charge of {} with the {} model{} ({} mill)\n", c.source, r.model,
                              layer ? " version " + in.model.variant : "",
                              c.mill.rotation == Rotation::Ccw ? "anticlockwise" : "clockwise");
-    std::cout << fmt::format("  diameter inside liners   {:>9.4f} m, {:.3f} of critical at {} rpm\n", I.diameter_eff_m,
+    std::cout << fmt::format("  diameter inside liners   {:>9.4f} m, {:.3f} of critical at {:.2f} rpm\n", I.diameter_eff_m,
                              I.fraction_critical, c.mill.speed_rpm);
     std::cout << fmt::format("  toe / shoulder           {:>9} / {} deg (anticlockwise from 3 o'clock)\n",
                              fmt_or_na(I.toe_deg, "{:.1f}"), fmt_or_na(I.shoulder_deg, "{:.1f}"));
@@ -274,7 +280,8 @@ void register_charge(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--variant", opts->variant, "Layer model version of thesis §4.6 (default: [model] variant)")
       ->check(CLI::IsMember({"1.0", "1.1", "1.2"}));
   cmd->add_option("--revolutions", opts->revolutions,
-                  "Mill revolutions to average over, after settling (default 2; 0.05 <= N <= 1e4)")
+                  "Mill revolutions to average over, after settling (default: 2 for the layer model, [dem] revolutions for "
+                  "the dem model; 0.05 <= N <= 1e4; not for the empirical model)")
       ->transform(decimal_check(false));
   cmd->add_flag("--json", opts->json, "Print one JSON object instead of the human summary");
   cmd->add_option("--out", opts->out, "Write charge.h5 and charts into this folder")

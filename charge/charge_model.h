@@ -69,6 +69,7 @@ struct ChargeModelEntry {
   bool resolves_impacts;     // fills LinerLoads::impacts
   bool resolves_abrasion;    // fills the per-element forces and slip
   std::unique_ptr<ChargeModel> (*make)();
+  bool runs_in_time = true;  // moves the charge over ChargeInput::revolutions (false: closed-form, no run length)
 };
 
 /// The table of charge models.

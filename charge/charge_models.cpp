@@ -13,9 +13,9 @@ namespace linerlife {
 
 const std::vector<ChargeModelEntry>& charge_models() {
   static const std::vector<ChargeModelEntry> table = {
-      // {name, description, resolves_impacts, resolves_abrasion, make}
+      // {name, description, resolves_impacts, resolves_abrasion, make, runs_in_time (default true)}
       {"empirical", "Morrell's C-model and Hogg-Fuerstenau: charge shape and power, instant (docs/models/empirical.md)",
-       false, false, &make_empirical_model},
+       false, false, &make_empirical_model, false},
       {"layer", "the thesis' real-time layer simulator, versions 1.0/1.1/1.2 (docs/models/layer.md)", true, true,
        &make_layer_model},
       {"dem", "2D soft-disc DEM slice on the liner surface (the accuracy reference; docs/models/dem.md)", true,

@@ -92,7 +92,8 @@ TEST_CASE("charge's summary says how each model's gross power is made up", "[cha
   const std::string pilot = std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/pilot_test_13.toml";  // ~60 discs
   for (const std::string model : {"empirical", "layer", "dem"}) {
     const RunResult r =
-        run_linerlife("charge " + (model == "dem" ? pilot : std::string()) + " --model " + model + " --revolutions 1");
+        run_linerlife("charge " + (model == "dem" ? pilot : std::string()) + " --model " + model +
+                      (model == "empirical" ? "" : " --revolutions 1"));
     REQUIRE(r.code == 0);
     std::smatch m;
     INFO(r.out);
@@ -157,5 +158,11 @@ TEST_CASE("charge refuses bad input with exit 2 and creates no output", "[charge
   CHECK(r.code == 2);
   r = run_linerlife("charge --revolutions -1");
   CHECK(r.code == 2);
+  // the closed-form model has no run length: refused, not ignored (a review
+  // found it ran and exited 0, as if the 50 revolutions had been simulated)
+  r = run_linerlife("charge --model empirical --revolutions 50 --out " + out.string());
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("--revolutions 50") && Catch::Contains("empirical model is closed-form"));
+  CHECK_FALSE(fs::exists(out));
   fs::remove_all(dir);
 }
