@@ -70,7 +70,13 @@ std::string node_text(const toml::node& n) {
   n.visit([&](auto&& v) {
     using T = std::decay_t<decltype(v)>;
     if constexpr (std::is_same_v<T, toml::value<std::string>>) ss << '"' << v.get() << '"';
-    else if constexpr (toml::is_value<T>) ss << v.get();
+    else if constexpr (std::is_same_v<T, toml::value<double>>) {
+      // as written: 64.0 is not echoed as 64 (it would read as the integer
+      // that "expected an integer" refuses)
+      const double x = v.get();
+      ss << x;
+      if (std::isfinite(x) && x == std::floor(x) && std::abs(x) < 1e15) ss << ".0";
+    } else if constexpr (toml::is_value<T>) ss << v.get();
     else if constexpr (std::is_same_v<T, toml::table>) ss << "(a table)";
     else ss << "(an array)";
   });
@@ -246,7 +252,7 @@ void check_and_resolve(Config& c) {
       L.profile = load_profile_csv(p.string());
       validate_measured_profile(L.profile, c.mill.shell_radius_m(), L.segments);
     } catch (const InputError& e) {
-      fail_at(c, "liner.profile_csv", e.what());
+      fail_at(c, "liner.profile_csv", fmt::format("[liner] profile_csv = \"{}\": {}", c.profile_csv, e.what()));
     }
   }
 
@@ -339,7 +345,23 @@ Config load_config_text(const std::string& text, const std::string& source, cons
   try {
     root = toml::parse(text, source);
   } catch (const toml::parse_error& e) {
-    throw InputError(source, fmt::format("{}:{}: TOML syntax error: {}", source, e.source().begin.line,
+    // the line as written, so that the message names the key (toml++ says
+    // only what it expected: "expected month between 1 and 12")
+    const auto line_no = e.source().begin.line;
+    std::string line_text;
+    {
+      std::istringstream in(text);
+      std::string l;
+      for (std::uint32_t n = 1; std::getline(in, l); ++n)
+        if (n == line_no) {
+          const auto a = l.find_first_not_of(" \t"), b = l.find_last_not_of(" \t\r");
+          if (a != std::string::npos) line_text = l.substr(a, b - a + 1);
+          break;
+        }
+    }
+    if (line_text.size() > 80) line_text = line_text.substr(0, 77) + "...";
+    throw InputError(source, fmt::format("{}:{}: TOML syntax error{}: {}", source, line_no,
+                                         line_text.empty() ? "" : " in \"" + printable(line_text) + "\"",
                                          std::string(e.description())));
   }
   const Schema& schema = config_schema();
@@ -410,9 +432,18 @@ Config load_config_text(const std::string& text, const std::string& source, cons
           }
           break;
       }
-      if (!ok)
-        throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: expected {} ({})", source, line, sname, kname,
-                                           printable(node_text(knode)), kind_name(spec->kind), spec->allowed()));
+      if (!ok) {
+        // a whole number written with a decimal point: say how to write it
+        const auto* fp = knode.as_floating_point();
+        const std::string hint =
+            spec->kind == ConfigValue::Kind::Int && fp && std::isfinite(fp->get()) &&
+                    fp->get() == std::floor(fp->get()) && std::abs(fp->get()) < 1e15
+                ? fmt::format(", without a decimal point ({} = {})", kname, static_cast<long long>(fp->get()))
+                : std::string();
+        throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: expected {}{} ({})", source, line, sname, kname,
+                                           printable(node_text(knode)), kind_name(spec->kind), hint,
+                                           spec->allowed()));
+      }
       const bool numeric = spec->kind == ConfigValue::Kind::Real || spec->kind == ConfigValue::Kind::Int;
       const double num = spec->kind == ConfigValue::Kind::Int ? static_cast<double>(v.integer) : v.real;
       if (numeric && !in_range(*spec, num))

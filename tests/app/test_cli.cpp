@@ -305,7 +305,8 @@ TEST_CASE("every refusal exits 2 with its message and writes nothing", "[app][cl
        "hex.csv:2: \"0.25,0x1p-2\" is not a pair of numbers x_m,y_m (metres): \"0x1p-2\" is a hexadecimal number"},
       {"liner", "profile_csv", "profile_csv = \"" + (dir / "needle.csv").string() + "\"",
        "needle.csv: point 4 (line 4) is 0.0002 mm from the stretch from point 1 (line 1) to point 2 (line 2): a needle"},
-      {"liner", "profile_csv", "profile_csv = \"nope.csv\"", "does not exist"},
+      // the key as well as the file (a review: the message named only the file)
+      {"liner", "profile_csv", "profile_csv = \"nope.csv\"", "[liner] profile_csv = \"nope.csv\": profile file"},
       {"model", "time_step_s", "time_step_s = -0.01", "out of range"},
       {"model", "charge", "charge = \"fem\"", "\"empirical\", \"layer\", \"dem\""},
   };
