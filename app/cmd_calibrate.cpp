@@ -256,7 +256,8 @@ void register_calibrate(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("CONFIG", o->config, "Mill configuration (TOML); default: the bundled Qiu SAG mill")
       ->check(config_path_check());
   cmd->add_option("--measured", o->measured, "Measured profiles: CSV hours,x_m,y_m (docs/measured-profiles.md)");
-  cmd->add_option("--fit", o->fit, "Factors to fit: abrasion,impact (default), abrasion, impact, all");
+  cmd->add_option("--fit", o->fit,
+                  "Factors to fit: abrasion,impact (default), abrasion, impact, all, or centrifugal,gravitational,impact");
   cmd->add_flag("--json", o->json, "Print one JSON object");
   cmd->add_option("--out", o->out, "Write calibrated.toml, calibrate.h5 and charts into this folder")
       ->check(out_folder_check("without --out nothing is written"));

@@ -42,7 +42,12 @@ int run_geometry(const GeometryOptions& o) {
         .set("face_angle_leading_deg", s0.face_angle_leading_deg)
         .set("face_angle_trailing_deg", s0.face_angle_trailing_deg)
         .set("top_width_m", s0.top_width_m)
+        // the thinnest point of the ring (kept under its first name; on a
+        // measured or worn profile it is not the plate's nominal thickness,
+        // which is plate_ref_thickness_m: docs/geometry.md)
         .set("plate_thickness_m", m.min_thickness_m)
+        .set("min_thickness_m", m.min_thickness_m)
+        .set("plate_ref_thickness_m", s0.plate_ref_thickness_m)
         .set("liner_area_m2", m.area_m2)
         .set("liner_mass_kg_per_m", m.mass_kg_per_m)
         .set("liner_mass_kg", m.mass_kg_per_m * c.mill.length_m)
@@ -68,7 +73,7 @@ int run_geometry(const GeometryOptions& o) {
     std::cout << fmt::format("  minimum plate thickness     {:>9.4f} m\n", m.min_thickness_m);
     std::cout << fmt::format("  liner mass (ring)           {:>9.0f} kg per m of length, {:.1f} t for {} m\n",
                              m.mass_kg_per_m, m.mass_kg_per_m * c.mill.length_m / 1000.0, c.mill.length_m);
-    std::cout << fmt::format("  diameter inside liners      {:>9.4f} m ({:.3f} of critical at {} rpm)\n",
+    std::cout << fmt::format("  diameter inside liners      {:>9.4f} m ({:.3f} of critical at {:.2f} rpm)\n",
                              m.effective_diameter_m, c.mill.speed_rpm / nc, c.mill.speed_rpm);
     std::cout << fmt::format("  surface elements            {:>9d} (at most {} m long)\n", s.n_elements(),
                              c.liner.element_size_m);

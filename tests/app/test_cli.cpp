@@ -53,6 +53,8 @@ TEST_CASE("geometry on the bundled mill reports its metrics", "[app][cli]") {
   CHECK(json_number(r.out, "face_angle_trailing_deg") == Approx(20).margin(3e-3));
   CHECK(json_number(r.out, "top_width_m") == Approx(0.15).margin(1e-9));
   CHECK(json_number(r.out, "plate_thickness_m") == Approx(0.075).margin(1e-9));
+  CHECK(json_number(r.out, "min_thickness_m") == json_number(r.out, "plate_thickness_m"));
+  CHECK(json_number(r.out, "plate_ref_thickness_m") == Approx(0.075).margin(1e-9));
   CHECK(json_number(r.out, "liner_mass_kg_per_m") > 40000);
   CHECK(json_number(r.out, "n_surface_elements") > 1000);
 }
