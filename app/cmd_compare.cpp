@@ -40,7 +40,7 @@ struct Case {
   std::vector<std::pair<std::string, std::string>> varied{};  // --vary: (key, value) in --vary order
   ForecastResult result;
   double mean_power_kw = 0, final_power_kw = 0, mean_direct_impacts = 0;
-  std::string caveat{};  // on the power history (worn_power_caveat())
+  std::vector<std::string> caveats{};  // on the power history (worn_power_caveat()) and the method's step (explicit_step_caveat())
 };
 
 /// Time average of a history column over the life (trapezoids).
@@ -260,8 +260,10 @@ int run_compare(const CompareOptions& o) {
     k.mean_power_kw = time_mean(k.result.history, &LifeRecord::net_power_kw);
     k.final_power_kw = k.result.history.back().net_power_kw;
     k.mean_direct_impacts = time_mean(k.result.history, &LifeRecord::direct_impact_fraction);
-    k.caveat = worn_power_caveat(k.config.model.charge, k.result.history);
-    if (!k.caveat.empty()) note(fmt::format("linerlife: note: {}: {}", k.label, k.caveat));
+    k.caveats = {worn_power_caveat(k.config.model.charge, k.result.history),
+                 explicit_step_caveat(k.config.forecast, k.config.mill.speed_rpm, k.result)};
+    for (const std::string& x : k.caveats)
+      if (!x.empty()) note(fmt::format("linerlife: note: {}: {}", k.label, x));
   }
 
   // designs ranked by the layer model: check the short list with the DEM
@@ -286,7 +288,8 @@ int run_compare(const CompareOptions& o) {
       j.set("case", k.label)
           .set("reached", k.result.reached)
           .set("criterion", k.result.criterion)
-          .set("relining_date", iso_date(k.result.relining_date))
+          .set_or_null("relining_date", k.result.reached ? iso_date(k.result.relining_date) : std::string())
+          .set("end_date", iso_date(k.result.relining_date))
           .set("operating_hours", k.result.operating_hours)
           .set("tonnes", k.result.tonnes)
           .set("mean_net_power_kw", k.mean_power_kw)
@@ -294,7 +297,7 @@ int run_compare(const CompareOptions& o) {
           .set("mean_direct_impact_fraction", k.mean_direct_impacts)
           .set("lifter_height_m_final", last.lifter_height_m)
           .set("face_angle_leading_deg_final", last.face_angle_leading_deg)
-          .set("caveats", caveats_json(k.caveat));
+          .set("caveats", caveats_json(k.caveats));
       if (!k.varied.empty()) {
         Json v = Json::object();
         for (const auto& kv : k.varied) v.set(kv.first, kv.second);
@@ -310,7 +313,8 @@ int run_compare(const CompareOptions& o) {
                              "criterion", "power kW", "end kW", "direct");
     for (const Case& k : cases)
       std::cout << fmt::format("{:<{}} {:>11} {:>9.0f} {:>22} {:>10.0f} {:>10.0f} {:>8.3f}\n", k.label, w,
-                               iso_date(k.result.relining_date), k.result.operating_hours, k.result.criterion,
+                               k.result.reached ? iso_date(k.result.relining_date) : "not reached",
+                               k.result.operating_hours, k.result.criterion,
                                k.mean_power_kw, k.final_power_kw, k.mean_direct_impacts);
   }
 
@@ -342,7 +346,8 @@ int run_compare(const CompareOptions& o) {
         }
         h5.text(g + "/config", config_to_toml(k.config, false));
         write_forecast(h5, g + "/forecast", k.result, k.config.forecast);
-        if (!k.caveat.empty()) h5.attr(g + "/forecast", "caveat", k.caveat);  // as forecast.h5's
+        const std::string lines = caveat_lines(k.caveats);
+        if (!lines.empty()) h5.attr(g + "/forecast", "caveat", lines);  // as forecast.h5's
       }
       h5.attr("/cases", "labels", labels);
       if (!cases.front().varied.empty()) {  // --vary: every case sets the same keys in the same order

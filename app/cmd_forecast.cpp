@@ -158,7 +158,8 @@ int run_forecast_command(const ForecastOptions& o) {
   if (drew) std::fprintf(stderr, "\n");
   note_drive_notes(f.notes, f.stats.charge_redrives);
   const LifeRecord& last = f.history.back();
-  const std::vector<std::string> caveats{worn_power_caveat(c.model.charge, f.history), dense_profile_caveat(c.liner)};
+  const std::vector<std::string> caveats{worn_power_caveat(c.model.charge, f.history), dense_profile_caveat(c.liner),
+                                         explicit_step_caveat(c.forecast, c.mill.speed_rpm, f)};
   const std::string caveat = caveat_lines(caveats);  // as forecast.h5 keeps them
 
   if (o.json) {
@@ -182,7 +183,11 @@ int run_forecast_command(const ForecastOptions& o) {
         .set("reached", f.reached)
         .set("criterion", f.criterion)
         .set("start_date", iso_date(c.forecast.calendar.start))
-        .set("relining_date", iso_date(f.relining_date))
+        // no date when no criterion was reached (the run ended on the
+        // horizon, whose date is end_date): a script reading relining_date
+        // gets no date that is not one
+        .set_or_null("relining_date", f.reached ? iso_date(f.relining_date) : std::string())
+        .set("end_date", iso_date(f.relining_date))
         .set("operating_hours", f.operating_hours)
         .set("calendar_days", f.calendar_days)
         .set("tonnes", f.tonnes)
@@ -226,8 +231,13 @@ int run_forecast_command(const ForecastOptions& o) {
                              last.min_thickness_m);
     std::cout << fmt::format("  net power                {:>10} kW -> {} kW\n", num(first.net_power_kw, "{:.0f}"),
                              num(last.net_power_kw, "{:.0f}"));
-    std::cout << fmt::format("  effort                   {} charge drives, {} remeshes, {} CVODE steps, {:.1f} s wall\n",
-                             f.stats.charge_redrives, f.stats.remeshes, f.stats.cvode_steps, f.stats.wall_s);
+    // the ode method's steps are CVODE's, the explicit methods' their own
+    const std::string steps = c.forecast.method == ForecastMethod::Ode
+                                  ? fmt::format("{} CVODE steps", f.stats.cvode_steps)
+                                  : fmt::format("{} {} step{}", f.stats.explicit_steps, method_name(c.forecast.method),
+                                                f.stats.explicit_steps == 1 ? "" : "s");
+    std::cout << fmt::format("  effort                   {} charge drives, {} remeshes, {}, {:.1f} s wall\n",
+                             f.stats.charge_redrives, f.stats.remeshes, steps, f.stats.wall_s);
   }
   // after the summary it qualifies (its net power line)
   std::cout.flush();

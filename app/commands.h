@@ -16,6 +16,7 @@
 namespace linerlife {
 
 struct LifeRecord;
+struct ForecastResult;
 
 /// Adds a subcommand to `app` and sets `run` to what it does once parsed.
 using RegisterCommand = void (*)(CLI::App& app, std::function<int()>& run);
@@ -131,6 +132,17 @@ std::string worn_power_caveat(const std::string& charge_model, const std::vector
 /// 500 (1.6 mm) by 0.30 %, as the parametric lifter (docs/profile-csv.md).
 constexpr double kDenseProfileCaveatSpacingM = 1e-3;
 std::string dense_profile_caveat(const LinerDesign& liner);
+/// A caveat on a forecast by an explicit method (amplify, euler) whose step
+/// is longer than kExplicitStepCaveatFraction of the life it forecast, or ""
+/// if none is due. Such a step wears the liner on the rates of its start (the
+/// charge is not re-driven inside it), so the life depends on the step: on
+/// the bundled Qiu mill amplify ends within 1.1 % of the ode method at
+/// amplification 1e5 (241 h steps, 3 % of the life), 10 % early at 1e6 and
+/// 60 % early at the default 1e7 (one step longer than the life); euler
+/// within 0.6 % at 400 h steps (5 %), 24 % early at 800 h (14 %)
+/// (docs/validation/forecast.md, "amplify" and "euler").
+constexpr double kExplicitStepCaveatFraction = 0.1;
+std::string explicit_step_caveat(const ForecastSpec& spec, double speed_rpm, const ForecastResult& f);
 /// A caveat as it goes into --json: an array of {text}, empty without one.
 Json caveats_json(const std::string& caveat);
 /// Several caveats (the empty ones left out) as one --json array of {text}.

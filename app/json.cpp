@@ -38,6 +38,9 @@ Json& Json::set(const std::string& k, long long v) { return set(k, raw(fmt::form
 Json& Json::set(const std::string& k, bool v) { return set(k, raw(v ? "true" : "false")); }
 Json& Json::set(const std::string& k, const std::string& v) { return set(k, raw(json_escape(v))); }
 Json& Json::set(const std::string& k, const char* v) { return set(k, std::string(v)); }
+Json& Json::set_or_null(const std::string& k, const std::string& v) {
+  return v.empty() ? set(k, raw("null")) : set(k, v);
+}
 Json& Json::set(const std::string& k, const std::vector<double>& v) {
   Json a = array();
   for (double x : v) a.push(x);

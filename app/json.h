@@ -20,6 +20,9 @@ class Json {
   Json& set(const std::string& key, const std::string& v);
   Json& set(const std::string& key, const char* v);
   Json& set(const std::string& key, const std::vector<double>& v);
+  /// A string, or null when `v` is empty (a value that may be absent, such
+  /// as a relining date when no criterion was reached).
+  Json& set_or_null(const std::string& key, const std::string& v);
   Json& push(const Json& v);
   Json& push(double v);
   std::string dump(int indent = 2) const;

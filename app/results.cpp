@@ -87,7 +87,8 @@ void write_forecast(H5Writer& h5, const std::string& g, const ForecastResult& f,
   h5.attr(g, "criterion", f.criterion);
   h5.attr(g, "operating_hours", f.operating_hours);
   h5.attr(g, "calendar_days", f.calendar_days);
-  h5.attr(g, "relining_date", iso_date(f.relining_date));
+  h5.attr(g, "relining_date", f.reached ? iso_date(f.relining_date) : std::string());  // "": no criterion reached
+  h5.attr(g, "end_date", iso_date(f.relining_date));  // where the run ended: the relining date or the horizon's
   h5.attr(g, "start_date", iso_date(spec.calendar.start));
   h5.attr(g, "tonnes", f.tonnes);
   const auto& st = f.stats;

@@ -68,7 +68,7 @@ struct ForecastResult {
   std::string criterion;         // "min_lifter_height", "min_plate_thickness", "max_face_angle_leading", "worn_through", or "horizon"
   double operating_hours = 0;    // [h] to the end of life
   double calendar_days = 0;      // [d]
-  CivilDate relining_date;
+  CivilDate relining_date;       // the end of the run: the relining date, or the horizon's date when !reached
   double tonnes = 0;             // [t] processed
   std::vector<LifeRecord> history;
   std::vector<ProfileRecord> profiles;

@@ -23,8 +23,9 @@ def draw(h5, out):
         return np.asarray(hist[key])
 
     hours = np.asarray(hist["hours"])
-    date = f.attrs["relining_date"]
+    date = f.attrs["relining_date"]  # "" when no criterion was reached
     crit = f.attrs["criterion"]
+    end = f.attrs["end_date"] if "end_date" in f.attrs else date
     method = f.attrs["method"]
 
     # Profile evolution: every snapshot in the lifter's frame, coloured by time.
@@ -45,7 +46,7 @@ def draw(h5, out):
     ax.set_aspect("equal")
     ax.set_xlabel("x from the lifter centreline [m]")
     ax.set_ylabel("height above the shell [m]")
-    ax.set_title(f"Lifter profile over the life ({method}): ends {date}, {crit}")
+    ax.set_title(f"Lifter profile over the life ({method}): ends {end}, {crit}")
     ax.legend(fontsize=8)
     save(fig, out, "forecast_profiles.png")
 
@@ -63,7 +64,8 @@ def draw(h5, out):
     axes[1, 1].set_ylabel("liner mass [t per m]")
     for a in axes[1]:
         a.set_xlabel("operating hours")
-    fig.suptitle(f"Liner along the life: relining {date} ({crit})")
+    fig.suptitle(f"Liner along the life: relining {date} ({crit})" if date
+                 else f"Liner along the life: no criterion reached by {end} ({crit})")
     fig.tight_layout()
     save(fig, out, "forecast_lifter.png")
 

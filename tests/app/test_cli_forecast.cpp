@@ -14,6 +14,7 @@
 
 #include "app/commands.h"
 #include "app/h5_reader.h"
+#include "forecast/forecast.h"
 #include "cli_runner.h"
 #include "geometry/measured_profile.h"
 #include "geometry/resample.h"
@@ -56,14 +57,23 @@ TEST_CASE("a forecast horizon beyond 1,000,000 calendar days gets its own date",
   t = std::regex_replace(t, std::regex("availability = 0.92\n"), "availability = 0.02\n");
   t = std::regex_replace(t, std::regex("\\[wear\\]\n"), "[wear]\nlaws = \"none\"\n");
   write_file(dir / "m.toml", t);
-  RunResult r = run_linerlife("forecast " + (dir / "m.toml").string() + " --json", 120);
+  RunResult r = run_linerlife("forecast " + (dir / "m.toml").string() + " --json --out " + (dir / "o").string(), 120);
   INFO(r.err);
   REQUIRE(r.code == 0);
   const JsonValue j = parse_json(r.out);
   CHECK(j["criterion"].str() == "horizon");
+  {
+    const H5Reader h5((dir / "o" / "forecast.h5").string());  // the same in the results file
+    CHECK(h5.attr_string("/forecast", "end_date") == "7730-12-22");
+    CHECK(h5.attr_string("/forecast", "relining_date").empty());
+  }
   CHECK(j["operating_hours"].num() == Approx(1e6));
   CHECK(j["calendar_days"].num() == Approx(1e6 / 0.48).epsilon(1e-9));
-  CHECK(j["relining_date"].str() == "7730-12-22");
+  // the run ended on the horizon: that date is end_date, and there is no
+  // relining date (a script reading one got the horizon's, a review found)
+  CHECK(j["end_date"].str() == "7730-12-22");
+  CHECK(j["relining_date"].kind == JsonValue::Kind::Null);
+  CHECK_FALSE(j["reached"].b);
   // at 0.01 the horizon's date would pass 9999-12-31: refused before any work
   write_file(dir / "m.toml", std::regex_replace(t, std::regex("availability = 0.02\n"), "availability = 0.01\n"));
   r = run_linerlife("forecast " + (dir / "m.toml").string() + " --json", 30);
@@ -122,6 +132,42 @@ TEST_CASE("forecast --json gives the relining date, the criterion and the histor
   CHECK(cav.size() == (dev > kWornPowerCaveatFraction ? 1u : 0u));
   for (const auto& c : cav) CHECK(r.err.find(c["text"].str()) != std::string::npos);  // also printed as a note
   fs::remove_all(dir);
+}
+
+TEST_CASE("an explicit method's step longer than a tenth of the life carries a caveat", "[app][forecast]") {
+  // the steps and lives of docs/validation/forecast.md (the bundled Qiu mill), at 10 rpm: 6 s a revolution
+  ForecastSpec spec;
+  ForecastResult f;
+  spec.method = ForecastMethod::Amplify;
+  f.operating_hours = 2908;  // amplification 1e7: one step of 1.5 x 6 s x 1e7 = 25,000 h
+  std::string c = explicit_step_caveat(spec, 10.0, f);
+  CHECK(c.find("the amplify method stepped 25000 h at a time") != std::string::npos);
+  CHECK(c.find("amplification = 1e+07 on 1.5 revolutions") != std::string::npos);
+  CHECK(c.find("860 % of this 2908 h life") != std::string::npos);
+  spec.amplification = 1e5;  // 250 h steps at 10 rpm over 7,433 h: within 1.1 % of the ode method
+  f.operating_hours = 7433;
+  CHECK(explicit_step_caveat(spec, 10.0, f).empty());
+  spec.amplification = 1e6;  // 2,500 h steps over 6,613 h: 10 % early
+  f.operating_hours = 6613;
+  CHECK_FALSE(explicit_step_caveat(spec, 10.0, f).empty());
+  spec.method = ForecastMethod::Euler;
+  spec.euler_step_h = 800;  // 14 % of 5,561 h: 24 % early
+  f.operating_hours = 5561;
+  c = explicit_step_caveat(spec, 10.0, f);
+  CHECK(c.find("the euler method stepped 800 h at a time (euler_step_h = 800), 14 % of this 5561 h life") !=
+        std::string::npos);
+  spec.euler_step_h = 400;  // 5 % of 7,352 h: within 0.6 %
+  f.operating_hours = 7352;
+  CHECK(explicit_step_caveat(spec, 10.0, f).empty());
+  // the threshold itself: a step of exactly a tenth is not flagged, just over it is
+  spec.euler_step_h = 100;
+  f.operating_hours = 1000;
+  CHECK(explicit_step_caveat(spec, 10.0, f).empty());
+  f.operating_hours = 999;
+  CHECK_FALSE(explicit_step_caveat(spec, 10.0, f).empty());
+  // the ode method has no fixed step
+  spec.method = ForecastMethod::Ode;
+  CHECK(explicit_step_caveat(spec, 10.0, f).empty());
 }
 
 TEST_CASE("the layer model's power history carries a caveat when it departs from the new liner's by more than 15 %",
@@ -343,6 +389,14 @@ TEST_CASE("forecast runs each method from the command line, and euler agrees wit
     CHECK(j["method"].str() == methods[i]);
     life[i] = j["operating_hours"].num();
     CHECK(life[i] > 0);
+    // amplify's default step (1e7 x 1.5 revolutions, thousands of hours) is
+    // longer than a tenth of the life: it says its life depends on the step
+    // (a review found it 60 % early without a word); the ode method never does
+    bool step_caveat = false;
+    for (const auto& cv : j["caveats"].items())
+      step_caveat = step_caveat || cv["text"].str().find("method stepped") != std::string::npos;
+    if (i == 0) CHECK_FALSE(step_caveat);
+    if (i == 2) CHECK(step_caveat);
   }
   // Euler with feedback (default step) follows the same physics as the ODE:
   // within 5 % here (docs/validation/forecast.md has the convergence study).
@@ -367,6 +421,7 @@ TEST_CASE("compare --vary forecasts one case per value and ranks them in a table
   for (const auto& c : cases) {
     CHECK(c["mean_net_power_kw"].num() > 0);
     CHECK(is_iso_date(c["relining_date"].str()));
+    CHECK(c["end_date"].str() == c["relining_date"].str());  // reached: the run ended on the relining date
     // a caveat on the layer model's power history is printed with its case
     for (const auto& cv : c["caveats"].items())
       CHECK(r.err.find(c["case"].str() + ": " + cv["text"].str()) != std::string::npos);

@@ -136,7 +136,10 @@ void soak(int runs, unsigned seed) {
     CHECK(finite_all(hist["face_angle_leading_deg"].nums()));
     CHECK(std::isfinite(j["operating_hours"].num()));
     CHECK(j["operating_hours"].num() > 0);
-    CHECK(j["relining_date"].str() > j["start_date"].str());  // ISO dates order as strings
+    CHECK(j["end_date"].str() > j["start_date"].str());  // ISO dates order as strings
+    // a relining date only where a criterion was reached, and then the end
+    if (j["reached"].b) CHECK(j["relining_date"].str() == j["end_date"].str());
+    else CHECK(j["relining_date"].kind == JsonValue::Kind::Null);
     for (size_t i = 1; i < hours.size(); ++i) {
       CHECK(hours[i] > hours[i - 1]);
       CHECK(mass[i] <= mass[i - 1] * (1 + 1e-12));
