@@ -1,5 +1,7 @@
 #include "app/checkpoint_file.h"
 
+#include <map>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -10,6 +12,7 @@
 #include "app/h5_reader.h"
 #include "app/h5_writer.h"
 #include "geometry/errors.h"
+#include "geometry/input_text.h"
 
 namespace linerlife {
 namespace {
@@ -178,15 +181,56 @@ void write_checkpoint(const OutputDir& dir, const std::string& config_text, cons
   dir.commit(tmp, "checkpoint.h5");
 }
 
+namespace {
+
+/// The keys whose lines differ between two configurations as config_to_toml()
+/// writes them ("[section]" lines, then "key = value"), up to three, as
+/// "[forecast] availability = 0.92 in the checkpoint, 0.9 now".
+std::string config_difference(const std::string& was, const std::string& now) {
+  auto keys = [](const std::string& text) {
+    std::map<std::string, std::string> m;  // "[section] key" -> value
+    std::istringstream in(text);
+    std::string line, section;
+    while (std::getline(in, line)) {
+      if (line.empty() || line[0] == '#') continue;
+      if (line[0] == '[') {
+        section = line;
+        continue;
+      }
+      const auto eq = line.find(" = ");
+      if (eq != std::string::npos) m[section + " " + line.substr(0, eq)] = line.substr(eq + 3);
+    }
+    return m;
+  };
+  const auto a = keys(was), b = keys(now);
+  std::vector<std::string> diffs;
+  for (const auto& [k, v] : a) {
+    const auto it = b.find(k);
+    if (it == b.end()) diffs.push_back(fmt::format("{} = {} in the checkpoint, absent now", k, v));
+    else if (it->second != v) diffs.push_back(fmt::format("{} = {} in the checkpoint, {} now", k, v, it->second));
+  }
+  for (const auto& [k, v] : b)
+    if (!a.count(k)) diffs.push_back(fmt::format("{} absent in the checkpoint, {} now", k, v));
+  std::string out;
+  for (size_t i = 0; i < diffs.size() && i < 3; ++i) out += (i ? "; " : "") + printable(diffs[i]);
+  if (diffs.size() > 3) out += fmt::format("; and {} more", diffs.size() - 3);
+  return out;
+}
+
+}  // namespace
+
 ForecastCheckpoint read_checkpoint(const std::string& path, const std::string& config_text, const ForecastInput& in,
                                    const ForecastSpec& spec) {
   H5Reader h5(path);
   if (!h5.exists("/checkpoint") || h5.attr_string("/", "command") != "checkpoint")
     throw InputError(path, fmt::format("{} is not a linerlife forecast checkpoint", path));
   if (h5.text("/config") != config_text)
-    throw InputError(path, fmt::format("{} was made with another configuration; resume with the same configuration, "
-                                       "or run without --resume to start afresh",
-                                       path));
+  {
+    const std::string what = config_difference(h5.text("/config"), config_text);
+    throw InputError(path, fmt::format("{} was made with another configuration{}; resume with the same "
+                                       "configuration, or run without --resume to start afresh",
+                                       path, what.empty() ? "" : " (" + what + ")"));
+  }
   if (h5.attr_string("/", "version") != program_version())
     throw InputError(path, fmt::format("{} was made by linerlife {}, this is {}; run without --resume", path,
                                        h5.attr_string("/", "version"), program_version()));

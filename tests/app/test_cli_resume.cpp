@@ -318,6 +318,21 @@ TEST_CASE("a damaged checkpoint is refused naming the file and the dataset and n
     CHECK(read_file(cp.string()) == before);  // left for a look
     CHECK(temporaries(out).empty());
   }
+  // a checkpoint of another configuration is refused naming the keys that
+  // differ (a review: "made with another configuration" said not which)
+  {
+    fs::copy_file(good, cp, fs::copy_options::overwrite_existing);
+    const fs::path cfg2 = dir / "qiu2.toml";
+    std::string t = std::regex_replace(resumable_qiu(), std::regex("availability = 0.92\n"), "availability = 0.9\n");
+    t = std::regex_replace(t, std::regex("length_m = 5.0\n"), "length_m = 5.5\n");
+    write_file(cfg2, t);
+    const RunResult r = run_linerlife("forecast " + cfg2.string() + " --json --quiet --out " + out.string() + " --resume", 60);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("was made with another configuration ([forecast] availability = 0.92 in the "
+                                      "checkpoint, 0.9 now; [mill] length_m = 5.0 in the checkpoint, 5.5 now)"));
+    CHECK_FALSE(fs::exists(out / "forecast.h5"));
+  }
   // the undamaged checkpoint resumes
   fs::copy_file(good, cp, fs::copy_options::overwrite_existing);
   const RunResult ok = run_linerlife("forecast " + cfg.string() + " --json --quiet --out " + out.string() + " --resume", 300);
