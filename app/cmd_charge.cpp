@@ -193,6 +193,9 @@ int run_charge(const ChargeOptions& o) {
     if (layer) j.set("variant", in.model.variant);
     j.set("config", c.source)
         .set("rotation", std::string(c.mill.rotation == Rotation::Ccw ? "ccw" : "cw"))
+        .set("angle_convention", "degrees anticlockwise from 3 o'clock, physical mill frame")
+        .set("speed_rpm", c.mill.speed_rpm)
+        .set("length_m", c.mill.length_m)
         .set("filling", c.charge.filling)
         .set("fraction_critical", I.fraction_critical)
         .set("diameter_eff_m", I.diameter_eff_m)

@@ -59,7 +59,7 @@ const char* kind_name(ConfigValue::Kind k) {
     case ConfigValue::Kind::Real: return "a number";
     case ConfigValue::Kind::Int: return "an integer";
     case ConfigValue::Kind::String: return "a string";
-    case ConfigValue::Kind::Date: return "a date (YYYY-MM-DD, unquoted)";
+    case ConfigValue::Kind::Date: return "a date";  // allowed() says how it is written
     case ConfigValue::Kind::Shutdowns: return "a list of shutdowns [{ start = YYYY-MM-DD, days = N }, ...]";
   }
   return "";
@@ -133,7 +133,7 @@ bool in_range(const KeySpec& k, double v) {
 }  // namespace
 
 std::string KeySpec::allowed() const {
-  if (kind == ConfigValue::Kind::Date) return "a date YYYY-MM-DD (unquoted TOML date)";
+  if (kind == ConfigValue::Kind::Date) return "YYYY-MM-DD, unquoted: a TOML date";
   if (kind == ConfigValue::Kind::Shutdowns)
     return "a list [{ start = YYYY-MM-DD, days = N }, ...] with N whole days, 0 < days <= 3650, none starting "
            "before start_date (may be empty)";

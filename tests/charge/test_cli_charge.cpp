@@ -55,6 +55,11 @@ TEST_CASE("charge --json gives the contractual keys", "[charge][cli]") {
     CHECK_THAT(r.out, Catch::Contains(std::string("\"") + k + "\":"));
   CHECK_THAT(r.out, Catch::Contains("\"model\": \"layer\""));
   CHECK(json_number(r.out, "filling") == 0.24);
+  // the mill's speed and length, which the powers are for (a review: with the
+  // speed given as a fraction of critical the rpm was nowhere in --json)
+  CHECK(json_number(r.out, "speed_rpm") == 10.36);  // data/mills/qiu2001_sag.toml
+  CHECK(json_number(r.out, "length_m") == 5.0);
+  CHECK_THAT(r.out, Catch::Contains("\"angle_convention\": \"degrees anticlockwise from 3 o'clock"));
   CHECK(json_number(r.out, "diameter_eff_m") == Approx(9.9608).margin(1e-3));
   // an anticlockwise mill: toe lower left, shoulder upper right (DESIGN.md §3)
   const double toe = json_number(r.out, "toe_deg"), sh = json_number(r.out, "shoulder_deg");
