@@ -22,9 +22,10 @@ def draw(h5, out):
         fx, fy = lifter_frame(np.asarray(p["fitted"]), R, 0.0)
         ax.plot(mx, my, "o", ms=3, color=f"C{i}", label=f"measured {p.attrs['hours']:.0f} h")
         ax.plot(fx, fy, "-", color=f"C{i}", lw=1, label=f"fitted {p.attrs['hours']:.0f} h")
+    ax.axhline(0.0, color="0.3", lw=0.8)  # the shell
     ax.set_aspect("equal")
-    ax.set_xlabel("x from the lifter centreline [m]")
-    ax.set_ylabel("height above the shell [m]")
-    ax.set_title(f"Calibration: RMS misfit {1000 * g.attrs['rms_m']:.1f} mm")
+    ax.set_xlabel("along the shell from the lifter centreline [m]")
+    ax.set_ylabel("height above the shell, R - r [m]")
+    ax.set_title(f"Calibration: RMS misfit {1000 * g.attrs['rms_m']:.2f} mm")
     ax.legend(fontsize=7)
     save(fig, out, "calibrate_profiles.png")

@@ -87,9 +87,12 @@ def unrolled(chain, R, centre, seg_angle):
 
 
 def lifter_frame(chain, R, centre):
-    """Mill-frame points -> the lifter's local Cartesian frame: x tangential
-    (anticlockwise) from the lifter centreline, y height above the shell."""
+    """Mill-frame points -> the shell unrolled about the lifter: x the arc
+    length along the shell (R times the angle, anticlockwise) from the lifter
+    centreline, y the height above the shell, R - |p| (the thickness the
+    criteria read). A Cartesian frame at the centreline put the plate at the
+    segment's edges about 6 mm too high on a 10 m mill (R - r cos(angle))."""
     c, s = np.cos(centre), np.sin(centre)
     xr = c * chain[:, 0] + s * chain[:, 1]
     yr = -s * chain[:, 0] + c * chain[:, 1]
-    return yr, R - xr
+    return R * np.arctan2(yr, xr), R - np.hypot(xr, yr)
