@@ -310,7 +310,7 @@ int run_compare(const CompareOptions& o) {
     size_t w = 36;
     for (const Case& k : cases) w = std::max(w, k.label.size() + 1);
     // power: the net power's mean over the life and at its end; direct: the
-    // mean fraction of the impacts that strike the liner directly
+    // mean share of the landings that strike the liner (docs/models/indicators.md)
     std::cout << fmt::format("{:<{}} {:>11} {:>9} {:>22} {:>10} {:>10} {:>8}\n", "case", w, "relining", "hours",
                              "criterion", "mean kW", "end kW", "direct");
     for (const Case& k : cases)
@@ -318,8 +318,8 @@ int run_compare(const CompareOptions& o) {
                                k.result.reached ? iso_date(k.result.relining_date) : "not reached",
                                k.result.operating_hours, k.result.criterion,
                                k.mean_power_kw, k.final_power_kw, k.mean_direct_impacts);
-    std::cout << "(mean kW / end kW: net power averaged over the life / at its end; direct: the fraction of the "
-                 "impacts that strike the liner directly, averaged over the life)\n";
+    std::cout << "(mean kW / end kW: net power averaged over the life / at its end; direct: the share of the "
+                 "landing charge that strikes the liner directly, averaged over the life)\n";
   }
 
   if (!o.out.empty()) {

@@ -38,7 +38,7 @@ struct Indicators {
   // Context every model reports.
   double diameter_eff_m = 0;      // [m] diameter inside the (possibly worn) liners
   double fraction_critical = 0;   // [-] speed / critical speed for diameter_eff_m
-  double direct_impact_fraction = 0;  // [-] share of impacting mass thrown straight onto the liner
+  double direct_impact_fraction = 0;  // [-] share of the landing mass thrown straight onto the liner (indicators.md)
   // Added by the charge-motion issue:
   double slurry_pool_power_kw = 0;    // [kW] part of net_power_kw due to the slurry pool of an overflow mill
   double inner_radius_m = 0;          // [m] inner surface radius r_i of the circulating charge (Morrell eq. 4.14)

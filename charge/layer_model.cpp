@@ -515,6 +515,7 @@ class LayerSim {
   std::vector<long long> traj_count_;       // trajectory flights per launch layer
   long long n_traj_flights_ = 0;
   long long n_flights_ = 0;
+  long long n_avg_landings_ = 0;  // landings in the averaging window (direct_impact_fraction's denominator)
   // loads, canonical element index
   std::vector<double> acc_N_, acc_Nc_, acc_Ng_, acc_S_, acc_NV_, acc_SV_;
   // pocket loads (ModelSpec::pocket_loads; docs/models/layer.md §7, "Pocket
@@ -1608,6 +1609,7 @@ void LayerSim::check_flights(double t1) {
       }
     }
     if (averaging_ && l.t >= t_avg0_) {
+      ++n_avg_landings_;
       const double tf = l.t - f.t0;
       if (tf >= 2.0 * std::sqrt(d_ball_ / kGravity)) {  // a trajectory (docs/models/indicators.md)
         ++traj_count_[f.from_layer];
@@ -3046,7 +3048,13 @@ ChargeResult LayerSim::run() {
     for (auto& ev : LL.impacts) ev.rate_per_s /= avg_time_;
   }
   LL.has_impacts = true;
-  I.direct_impact_fraction = n_flights_ > 0 ? static_cast<double>(LL.impacts.size()) / n_flights_ : 0.0;
+  // the share of the landings in the averaging window that strike the liner
+  // (the impacts are those landings; every element has the same mass, so it
+  // is the share of the landing mass, as the DEM's). Until 2026-12-05 the
+  // denominator was every flight of the run, settling included, which read
+  // low by the settling's share of the run (a third at the default 1 + 2
+  // revolutions).
+  I.direct_impact_fraction = n_avg_landings_ > 0 ? static_cast<double>(LL.impacts.size()) / n_avg_landings_ : 0.0;
   res.snapshots = std::move(snaps_);
   res.notes = notes_;
   RunStats& st = res.stats;

@@ -49,9 +49,12 @@ def draw(h5, out):
     axes[1].bar(x - 0.2, mean_p, 0.4, label="mean over the life")
     axes[1].bar(x + 0.2, end_p, 0.4, label="end of life")
     axes[1].set_ylabel("net power [kW]")
-    axes[1].legend(fontsize=8)
+    top = np.nanmax(np.concatenate([mean_p, end_p])) if len(mean_p) else 0.0
+    if np.isfinite(top) and top > 0:
+        axes[1].set_ylim(0, 1.3 * top)  # room for the legend above the bars
+    axes[1].legend(fontsize=8, loc="upper right")
     axes[2].bar(x, direct, color="C3")
-    axes[2].set_ylabel("direct liner impacts (mass share)")
+    axes[2].set_ylabel("share of landings on the liner")
     for a in axes:
         a.set_xticks(x)
         a.set_xticklabels(labels, rotation=30, ha="right", fontsize=8)
