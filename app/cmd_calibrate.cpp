@@ -228,6 +228,31 @@ int run_calibrate(const CalibrateOptions& o) {
       h5.attr("/calibrate", "remaining_hours_p10", q.p10_h);
       h5.attr("/calibrate", "remaining_hours_p50", q.p50_h);
       h5.attr("/calibrate", "remaining_hours_p90", q.p90_h);
+      // the fit's result, as --json gives it (a review: the file had the
+      // misfit and the remaining hours but not the factors or the dates)
+      h5.attr("/calibrate", "measured_file", o.measured);
+      h5.attr("/calibrate", "converged", static_cast<long long>(r.converged));
+      h5.attr("/calibrate", "last_measured_hours", last.hours);
+      h5.attr("/calibrate", "criterion", q.criterion);
+      h5.attr("/calibrate", "relining_date_p10", date(q.p10_h));
+      h5.attr("/calibrate", "relining_date_p50", date(q.p50_h));
+      h5.attr("/calibrate", "relining_date_p90", date(q.p90_h));
+      h5.attr("/calibrate", "calibration_centrifugal", cal.wear.calibration_centrifugal);
+      h5.attr("/calibrate", "calibration_gravitational", cal.wear.calibration_gravitational);
+      h5.attr("/calibrate", "calibration_impact", cal.wear.calibration_impact);
+      {
+        std::string names;
+        std::vector<double> factor, sigma;
+        for (size_t i = 0; i < ps.size(); ++i) {
+          names += (i ? "\n" : "") + ps[i].name;
+          factor.push_back(r.params[i]);
+          sigma.push_back(r.sigma_log[i]);
+        }
+        h5.attr("/calibrate", "parameters", names);  // one name per line, in the order of factor and sigma_ln
+        h5.dataset("/calibrate/factor", factor, {factor.size()}, "-");
+        h5.dataset("/calibrate/sigma_ln", sigma, {sigma.size()}, "-");
+        h5.dataset("/calibrate/rms_per_profile_m", r.rms_per_snapshot_m, {r.rms_per_snapshot_m.size()}, "m");
+      }
       for (size_t i = 0; i < h.snapshots.size(); ++i) {
         const std::string g = fmt::format("/calibrate/profile_{}", i);
         h5.group(g);

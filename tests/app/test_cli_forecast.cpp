@@ -694,6 +694,18 @@ TEST_CASE("calibrate recovers the wear factor of synthetic scans from the comman
   CHECK(j["remaining_hours_p10"].num() <= j["remaining_hours_p50"].num());
   CHECK(j["remaining_hours_p50"].num() <= j["remaining_hours_p90"].num());
   CHECK(j["relining_date_p10"].str() <= j["relining_date_p90"].str());
+  // calibrate.h5 holds the fit's result as --json gives it
+  {
+    const H5Reader cal((dir / "cal" / "calibrate.h5").string());
+    CHECK(cal.attr_string("/calibrate", "parameters") == params[0]["name"].str());
+    REQUIRE(cal.doubles("/calibrate/factor").size() == 1);
+    CHECK(cal.doubles("/calibrate/factor")[0] == params[0]["factor"].num());
+    CHECK(cal.doubles("/calibrate/sigma_ln")[0] == params[0]["sigma_ln"].num());
+    CHECK(cal.attr_string("/calibrate", "relining_date_p50") == j["relining_date_p50"].str());
+    CHECK(cal.attr_string("/calibrate", "criterion") == j["criterion"].str());
+    CHECK(cal.attr_double("/calibrate", "calibration_gravitational") == j["calibration_gravitational"].num());
+    CHECK(cal.doubles("/calibrate/rms_per_profile_m").size() == 2);
+  }
   // the calibrated configuration carries the fitted factor and loads again
   REQUIRE(fs::exists(dir / "cal" / "calibrated.toml"));
   CHECK_THAT(read_file((dir / "cal" / "calibrated.toml").string()), Catch::Contains("calibration_gravitational"));
