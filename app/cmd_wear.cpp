@@ -111,8 +111,13 @@ int run_wear_command(const WearOptions& o) {
   } else {
     const SegmentMetrics m0 = segment_metrics(r.initial, 0, mill.rotation, c.material.density_kg_m3);
     const SegmentMetrics m1 = segment_metrics(r.final, 0, mill.rotation, c.material.density_kg_m3);
-    std::cout << fmt::format("Wear run of {} ({} charge model, {} revolutions, amplification {:g}/{:g}{})\n", c.source,
-                             entry.name, c.wear.revolutions, c.wear.amplification_abrasion, c.wear.amplification_impact,
+    // the revolutions that ran: a run that wore through stopped before the ones asked for
+    const std::string revs =
+        r.worn_through ? fmt::format("{:.2f} of {} revolutions, stopped", r.simulated_s * mill.speed_rpm / 60.0,
+                                     c.wear.revolutions)
+                       : fmt::format("{} revolutions", c.wear.revolutions);
+    std::cout << fmt::format("Wear run of {} ({} charge model, {}, amplification {:g}/{:g}{})\n", c.source,
+                             entry.name, revs, c.wear.amplification_abrasion, c.wear.amplification_impact,
                              c.wear.feedback ? ", feedback" : "");
     std::cout << fmt::format("  laws                        {}\n", law_list_text(c.wear.laws));
     std::cout << fmt::format("  mass lost                   {:>10.3f} kg per m of length ({:.1f} kg for {} m)\n",

@@ -48,6 +48,8 @@ Json wear_summary(const Config& c, const WearRunResult& r, const Mill& mill, con
       .set("amplification_abrasion", c.wear.amplification_abrasion)
       .set("amplification_impact", c.wear.amplification_impact)
       .set("revolutions", c.wear.revolutions)
+      // what ran: fewer than asked when the liner wore through
+      .set("revolutions_simulated", r.simulated_s * mill.speed_rpm / 60.0)
       .set("mass_loss_kg_per_m", r.mass_loss_kg_per_m)
       .set("mass_loss_kg", r.mass_loss_kg_per_m * mill.length_m)
       .set("liner_mass_kg_per_m", r.liner_mass_final_kg_per_m)

@@ -53,7 +53,10 @@ def finite_datasets(h5):
 def draw(h5, out):
     info = summary(h5)
     rot = info.get("rotation", "ccw")
-    title_tail = f"{info.get('charge_model', '')} model, {info.get('revolutions', 0)} rev, A = {info.get('amplification_abrasion', 1):g}"
+    revs = f"{info.get('revolutions', 0)} rev"
+    if info.get("worn_through", False):  # it stopped before the revolutions asked for
+        revs = f"{info.get('revolutions_simulated', 0):.2f} of {info.get('revolutions', 0)} rev, worn through"
+    title_tail = f"{info.get('charge_model', '')} model, {revs}, A = {info.get('amplification_abrasion', 1):g}"
 
     # Fig. 5-13: the profile as it wears, snapshots superimposed.
     fig, ax = plt.subplots(figsize=(7, 5))

@@ -118,6 +118,28 @@ TEST_CASE("wear: the bundled mill runs, or says which charge model is missing", 
     CHECK_THAT(r.out, Catch::Contains(std::string("\"") + key + "\""));
 }
 
+TEST_CASE("wear: a run that wears through says how many revolutions it ran", "[app][cli][wear]") {
+  // a review: at amplification 1e7 the bundled liner wears through after
+  // 1.65 s of 3 revolutions (5.8 s each), and the header, the JSON and the
+  // charts all said "3 revolutions"
+  if (!has_model("layer")) return;
+  const RunResult j = run_linerlife("wear --json --amplification 1e7 --revolutions 3");
+  REQUIRE(j.code == 0);
+  CHECK_THAT(j.out, Catch::Contains("\"worn_through\": true"));
+  const std::smatch m = [&] {
+    std::smatch x;
+    std::regex_search(j.out, x, std::regex("\"revolutions_simulated\": ([0-9.eE+-]+)"));
+    return x;
+  }();
+  REQUIRE(m.size() == 2);
+  const double ran = std::stod(m[1]);
+  CHECK(ran > 0);
+  CHECK(ran < 3);
+  const RunResult t = run_linerlife("wear --amplification 1e7 --revolutions 3");
+  REQUIRE(t.code == 0);
+  CHECK_THAT(t.out, Catch::Contains(fmt::format("{:.2f} of 3 revolutions, stopped", ran)));
+}
+
 TEST_CASE("wear: the charge model's notes reach the user, counted over the drives", "[app][cli][wear]") {
   if (!has_model("layer")) return;
   // a 20 ms step moves the Qiu shell 0.81 media diameters: the layer model
