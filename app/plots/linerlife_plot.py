@@ -8,8 +8,10 @@ the charts. Every PNG is written under a temporary name and renamed, so a
 crash never leaves a half-written picture. Needs Debian's python3-matplotlib
 and python3-h5py (run with /usr/bin/python3).
 
-Before drawing, the datasets the module's finite_datasets(h5) names are read
-whole: a NaN or an infinite value there (a damaged file) draws nothing.
+Before drawing, the datasets the module's required_rows(h5) names must be
+there with at least one row, and those its finite_datasets(h5) names are read
+whole: a missing or empty one, or a NaN or an infinite value (a damaged file),
+draws nothing.
 
 Exit codes: 0 charts drawn; 3 the results file lacks a group, dataset or
 attribute its kind has (damaged or not written by linerlife); 4 a dataset it
@@ -45,6 +47,10 @@ def main(argv):
 
     with h5py.File(results, "r") as h5:
         try:
+            # the datasets a chart needs rows of: missing or empty, the file is incomplete
+            for path in (module.required_rows(h5) if hasattr(module, "required_rows") else []):
+                if len(h5[path]) == 0:
+                    raise KeyError(f"{path} is empty")
             check_finite(h5, module.finite_datasets(h5) if hasattr(module, "finite_datasets") else [])
             module.draw(h5, out)
         except KeyError as e:  # h5py: a missing object or attribute

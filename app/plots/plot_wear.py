@@ -37,6 +37,12 @@ def summary(h5):
     return json.loads(v.decode() if isinstance(v, bytes) else v)
 
 
+def required_rows(h5):
+    """The datasets the charts need rows of (a history of no rows drew empty axes and exit 0, a review found)."""
+    return ["/snapshots/time_s", "/history/time_s", "/history/per_segment_kg_per_m", "/history/centrifugal_kg_per_m",
+            "/history/gravitational_kg_per_m", "/history/impact_kg_per_m", "/history/total_kg_per_m"]
+
+
 def finite_datasets(h5):
     """The datasets drawn that must hold finite numbers (linerlife_plot.py checks them before drawing)."""
     groups = ["/surface_initial", "/surface_final", "/companions/abrasion_only", "/companions/impact_only",

@@ -250,6 +250,27 @@ TEST_CASE("plot refuses what is not a results file it can draw", "[app][cli][inp
     CHECK(dmg.code == 2);
     CHECK_THAT(dmg.err, Catch::Contains("is damaged or incomplete"));
     CHECK(dmg.err.find("python3-matplotlib") == std::string::npos);
+    // a real wear file whose history has no rows (a review: it drew empty
+    // axes with exit 0), and one without a history dataset
+    const fs::path wear_dir = dir / "wear";
+    REQUIRE(run_linerlife("wear --revolutions 0.05 --out " + wear_dir.string()).code == 0);
+    const std::string good = (wear_dir / "wear.h5").string();
+    for (const std::string& edit :
+         {std::string("del f['/history/total_kg_per_m']"),
+          std::string("[f['/history'].__delitem__(k) or f['/history'].create_dataset(k, shape=(0,) + "
+                      "f2['/history'][k].shape[1:], dtype='f8') for k in list(f2['/history'])]")}) {
+      const std::string bad = (dir / "bad_wear.h5").string();
+      fs::copy_file(good, bad, fs::copy_options::overwrite_existing);
+      const std::string py = "/usr/bin/python3 -c \"import h5py; f = h5py.File('" + bad + "', 'r+'); f2 = h5py.File('" +
+                             good + "', 'r'); " + edit + "; f.close()\"";
+      REQUIRE(std::system(py.c_str()) == 0);
+      const fs::path out = dir / "bad_charts";
+      const RunResult w = run_linerlife("plot " + bad + " --out " + out.string());
+      INFO(edit << "\n" << w.err);
+      CHECK(w.code == 2);
+      CHECK_THAT(w.err, Catch::Contains("is damaged or incomplete"));
+      CHECK_FALSE(fs::exists(out));
+    }
   }
   fs::remove_all(dir);
 }
