@@ -107,13 +107,15 @@ void H5Writer::dataset(const std::string& path, const std::vector<double>& data,
   });
 }
 
-void H5Writer::dataset(const std::string& path, const std::vector<long long>& data, const std::vector<size_t>& dims) {
+void H5Writer::dataset(const std::string& path, const std::vector<long long>& data, const std::vector<size_t>& dims,
+                       const std::string& units) {
   guarded(impl_->file_name, failed_, "dataset " + path, [&] {
     std::vector<hsize_t> hd(dims.begin(), dims.end());
     H5::DataSpace space(static_cast<int>(hd.size()), hd.data());
     H5::DataSet ds = impl_->file.createDataSet(path, H5::PredType::NATIVE_LLONG, space);
     if (!data.empty()) ds.write(data.data(), H5::PredType::NATIVE_LLONG);
     ds.close();
+    if (!units.empty()) attr(path, "units", units);
   });
 }
 

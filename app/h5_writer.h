@@ -26,7 +26,9 @@ class H5Writer {
   /// A dataset of doubles with shape `dims` (row-major); `units` goes in a "units" attribute.
   void dataset(const std::string& path, const std::vector<double>& data, const std::vector<size_t>& dims,
                const std::string& units = "");
-  void dataset(const std::string& path, const std::vector<long long>& data, const std::vector<size_t>& dims);
+  /// A dataset of integers (indices and counts: units "-" unless given).
+  void dataset(const std::string& path, const std::vector<long long>& data, const std::vector<size_t>& dims,
+               const std::string& units = "-");
   /// A scalar variable-length string dataset (e.g. the resolved configuration).
   void text(const std::string& path, const std::string& value);
   /// Flushes and closes; after this only the destructor may be called.

@@ -170,7 +170,12 @@ TEST_CASE("the out folder gets the results file and the charts, atomically", "[a
                             "assert f['surface/nodes'].shape[1]==2; assert f.attrs['program']=='linerlife'; "
                             "assert 'diameter_m = 10.36' in f['config'][()].decode(); "
                             "assert abs(f['metrics/lifter_height_m'][0]-0.25)<1e-9; "
-                            "assert f['lifter_grid/fraction'].shape==(60,60); print('ok')\" " +
+                            "assert f['lifter_grid/fraction'].shape==(60,60); "
+                            // every numeric dataset carries its units (docs/output.md; the integer
+                            // ones, segment_begin and segment_design, had none before 2026-12-05)
+                            "m=[]; f.visititems(lambda k,o: m.append(k) if isinstance(o,h5py.Dataset) and "
+                            "o.dtype.kind in 'iuf' and 'units' not in o.attrs else None); assert not m, m; "
+                            "print('ok')\" " +
                             (dir / "run" / "geometry.h5").string();
   FILE* p = popen(check.c_str(), "r");
   char buf[16] = {0};
