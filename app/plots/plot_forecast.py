@@ -14,6 +14,19 @@ def finite_datasets(h5):
             "/forecast/history/min_thickness_m", "/forecast/history/liner_mass_kg_per_m"]
 
 
+def criteria(h5):
+    """The [forecast] relining criteria of the run (its /config), {} where it cannot be read."""
+    try:
+        import tomllib
+        text = h5["/config"][()]
+        cfg = tomllib.loads(text.decode() if isinstance(text, bytes) else text)
+        f = cfg.get("forecast", {})
+        return {k: float(f[k]) for k in ("min_lifter_height_m", "min_plate_thickness_m", "max_face_angle_leading_deg")
+                if k in f}
+    except Exception:  # an older Python without tomllib, or a /config it cannot read: no lines
+        return {}
+
+
 def draw(h5, out):
     f = h5["/forecast"]
     R = float(h5["/surface"].attrs["shell_radius_m"])
@@ -61,6 +74,13 @@ def draw(h5, out):
     axes[1, 0].set_ylabel("thinnest point [mm]")
     axes[1, 1].plot(hours, np.asarray(hist["liner_mass_kg_per_m"]) / 1000)
     axes[1, 1].set_ylabel("liner mass [t per m]")
+    # the relining criteria of the run's configuration, dashed
+    limits = criteria(h5)
+    for ax, key, scale in ((axes[0, 0], "min_lifter_height_m", 1000), (axes[0, 1], "max_face_angle_leading_deg", 1),
+                           (axes[1, 0], "min_plate_thickness_m", 1000)):
+        if key in limits:
+            ax.axhline(scale * limits[key], color="C3", ls="--", lw=0.8, label="relining criterion")
+    axes[1, 0].legend(fontsize=8)
     for a in axes[1]:
         a.set_xlabel("operating hours")
     fig.suptitle(f"Liner along the life: relining {date} ({crit})" if date
