@@ -204,10 +204,8 @@ std::string dense_profile_caveat(const LinerDesign& liner) {
 
 std::string explicit_step_caveat(const ForecastSpec& spec, double speed_rpm, const ForecastResult& f) {
   if (spec.method == ForecastMethod::Ode || !(f.operating_hours > 0)) return "";
-  // the step as Life::run_explicit() takes it (forecast/forecast.cpp)
   const bool amplify = spec.method == ForecastMethod::Amplify;
-  const double step_h =
-      amplify ? spec.amplify_revolutions * 60.0 / speed_rpm * spec.amplification / 3600.0 : spec.euler_step_h;
+  const double step_h = explicit_step_s(spec, speed_rpm) / 3600.0;  // the step the run took
   if (!(step_h > kExplicitStepCaveatFraction * f.operating_hours)) return "";
   const std::string setting =
       amplify ? fmt::format("amplification = {:g} on {:g} revolutions", spec.amplification, spec.amplify_revolutions)

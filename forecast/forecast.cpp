@@ -33,6 +33,15 @@ const char* method_name(ForecastMethod m) {
   return "?";
 }
 
+double explicit_step_s(const ForecastSpec& spec, double speed_rpm) {
+  switch (spec.method) {
+    case ForecastMethod::Ode: return 0.0;
+    case ForecastMethod::Euler: return spec.euler_step_h * 3600.0;
+    case ForecastMethod::Amplify: return spec.amplify_revolutions * (60.0 / speed_rpm) * spec.amplification;
+  }
+  return 0.0;
+}
+
 int pattern_period(const LinerSurface& s) {
   for (int p = 1; p <= s.segments; ++p) {
     if (s.segments % p != 0) continue;
@@ -376,12 +385,12 @@ class Life {
     try {
       switch (spec_.method) {
         case ForecastMethod::Ode: run_ode(); break;
-        case ForecastMethod::Euler: run_explicit(spec_.euler_step_h * 3600.0, spec_.revolutions_per_drive, false); break;
-        case ForecastMethod::Amplify: {
-          const double period_s = 60.0 / in_.speed_rpm;
-          run_explicit(spec_.amplify_revolutions * period_s * spec_.amplification, spec_.amplify_revolutions, true);
+        case ForecastMethod::Euler:
+          run_explicit(explicit_step_s(spec_, in_.speed_rpm), spec_.revolutions_per_drive, false);
           break;
-        }
+        case ForecastMethod::Amplify:
+          run_explicit(explicit_step_s(spec_, in_.speed_rpm), spec_.amplify_revolutions, true);
+          break;
       }
     } catch (const SimulationError&) {
       if (hooks_.partial) {

@@ -46,5 +46,9 @@ struct ForecastSpec {
 };
 
 const char* method_name(ForecastMethod m);
+/// The fixed step [s] of an explicit method (euler: euler_step_h; amplify:
+/// amplify_revolutions mill periods times the amplification); 0 for the ode
+/// method, which has none.
+double explicit_step_s(const ForecastSpec& spec, double speed_rpm);
 
 }  // namespace linerlife
