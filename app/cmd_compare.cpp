@@ -5,6 +5,7 @@
 // several at once (--jobs), each on one thread, with the same results as one
 // after the other.
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <iostream>
 #include <mutex>
@@ -147,6 +148,20 @@ std::vector<Case> vary_cases(const Config& base, const std::vector<std::string>&
       throw InputError("--vary", fmt::format("--vary {}: give at least two values", v));
     for (const std::string& x : a.values)
       if (x.empty()) throw InputError("--vary", fmt::format("--vary {}: an empty value", v));
+    // the same value twice makes two identical cases under one label (a
+    // review); numbers are compared as numbers (10 and 10.0 are one value)
+    auto same_value = [](const std::string& x, const std::string& y) {
+      if (x == y) return true;
+      char *ex = nullptr, *ey = nullptr;
+      const double dx = std::strtod(x.c_str(), &ex), dy = std::strtod(y.c_str(), &ey);
+      return ex != x.c_str() && *ex == '\0' && ey != y.c_str() && *ey == '\0' && dx == dy;
+    };
+    for (size_t i = 0; i < a.values.size(); ++i)
+      for (size_t k = 0; k < i; ++k)
+        if (same_value(a.values[i], a.values[k]))
+          throw InputError("--vary", fmt::format("--vary {}: {} is given twice (values {} and {}); each value makes "
+                                                 "a case, and two cases would be the same forecast",
+                                                 v, a.values[i], k + 1, i + 1));
     axes.push_back(std::move(a));
   }
   // Every combination is a whole forecast (some 20 s each on the bundled

@@ -359,6 +359,9 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
        {"--vary liner.lifter_height_m=0.2: liner.lifter_height_m is already varied"}},
       {"compare --vary liner.lifter_height_m=0.23 --vary mill.speed_rpm=10" + o, {"--vary: 1 case", "at least two"}},
       {"compare --vary liner.lifter_height_m=0.23,,0.25" + o, {"--vary liner.lifter_height_m=0.23,,0.25: an empty value"}},
+      // the same value twice: two identical forecasts under one label (a review)
+      {"compare --vary liner.face_angle_leading_deg=10,15,10.0" + o,
+       {"--vary liner.face_angle_leading_deg=10,15,10.0: 10.0 is given twice (values 1 and 3)"}},
       {"compare --vary liner.lifter_height_m=0.23,0.25," + o, {"--vary liner.lifter_height_m=0.23,0.25,: an empty value"}},
       {"compare --vary liner.lifter_height_m=0.23,0.25 --vary liner.bogus=1,2" + o,
        {"--vary liner.bogus=1,2: unknown configuration key [liner] bogus"}},
