@@ -65,6 +65,10 @@ const char* kind_name(ConfigValue::Kind k) {
   return "";
 }
 
+/// A float that holds a whole number, as `64.0` does (node_text() echoes it
+/// with its decimal point; an integer key's refusal says how to write it).
+bool whole_float(double x) { return std::isfinite(x) && x == std::floor(x) && std::abs(x) < 1e15; }
+
 std::string node_text(const toml::node& n) {
   std::ostringstream ss;
   n.visit([&](auto&& v) {
@@ -75,7 +79,7 @@ std::string node_text(const toml::node& n) {
       // that "expected an integer" refuses)
       const double x = v.get();
       ss << x;
-      if (std::isfinite(x) && x == std::floor(x) && std::abs(x) < 1e15) ss << ".0";
+      if (whole_float(x)) ss << ".0";
     } else if constexpr (toml::is_value<T>) ss << v.get();
     else if constexpr (std::is_same_v<T, toml::table>) ss << "(a table)";
     else ss << "(an array)";
@@ -359,9 +363,8 @@ Config load_config_text(const std::string& text, const std::string& source, cons
           break;
         }
     }
-    if (line_text.size() > 80) line_text = line_text.substr(0, 77) + "...";
     throw InputError(source, fmt::format("{}:{}: TOML syntax error{}: {}", source, line_no,
-                                         line_text.empty() ? "" : " in \"" + printable(line_text) + "\"",
+                                         line_text.empty() ? "" : " in \"" + printable(line_text, 80) + "\"",
                                          std::string(e.description())));
   }
   const Schema& schema = config_schema();
@@ -436,8 +439,7 @@ Config load_config_text(const std::string& text, const std::string& source, cons
         // a whole number written with a decimal point: say how to write it
         const auto* fp = knode.as_floating_point();
         const std::string hint =
-            spec->kind == ConfigValue::Kind::Int && fp && std::isfinite(fp->get()) &&
-                    fp->get() == std::floor(fp->get()) && std::abs(fp->get()) < 1e15
+            spec->kind == ConfigValue::Kind::Int && fp && whole_float(fp->get())
                 ? fmt::format(", without a decimal point ({} = {})", kname, static_cast<long long>(fp->get()))
                 : std::string();
         throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: expected {}{} ({})", source, line, sname, kname,

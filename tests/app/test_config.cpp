@@ -281,6 +281,9 @@ TEST_CASE("forecast dates, availability and shutdowns load and are checked", "[a
           {"mill.toml:", "TOML syntax error in \"start_date = 2027-02-30\""});
   refused(edited("forecast", "start_date", "\"2027-01-01\""), {"start_date", "expected a date"});
   refused(edited("forecast", "start_date", "2027-13-01"), {"TOML syntax error in \"start_date = 2027-13-01\""});
+  // a long line is quoted up to 80 bytes, with its length
+  refused(edited("forecast", "start_date", "2027-13-01 " + std::string(120, 'x')),
+          {"TOML syntax error in \"start_date = 2027-13-01 xxx", "... (144 bytes)\""});
   refused(edited("forecast", "availability", "0.0"), {"availability = 0.0:", "0 < value <= 1"});
   refused(edited("forecast", "availability", "1.2"), {"availability = 1.2", "out of range"});
   refused(edited("forecast", "shutdowns", "{ start = 2027-06-01, days = 7 }"), {"shutdowns", "expected a list"});
