@@ -214,8 +214,20 @@ int run_calibrate(const CalibrateOptions& o) {
   if (!o.out.empty()) {
     OutputDir dir(o.out);
     dir.prepare();
-    dir.write_text("calibrated.toml", "# Calibrated by `linerlife calibrate` against " + o.measured + "\n" +
-                                          config_to_toml(cal, true));
+    // the fit's result as comments: a file passed on alone still says how
+    // far its factors can be trusted (the same figures as --json and calibrate.h5)
+    std::string head = fmt::format("# Calibrated by `linerlife calibrate` against {} ({} profiles, {} to {} h)\n",
+                                   o.measured, h.snapshots.size(), h.snapshots.front().hours, last.hours);
+    for (size_t i = 0; i < ps.size(); ++i)
+      head += fmt::format("#   {}: factor {:.4g}, 1-sigma x/ {:.3f} (sigma_ln {:.4g})\n", ps[i].name, r.params[i],
+                          std::exp(r.sigma_log[i]), r.sigma_log[i]);
+    head += fmt::format("#   RMS misfit {:.2f} mm (was {:.2f} mm with the given factors){}\n", 1000 * r.rms_m,
+                        1000 * r.rms_initial_m, r.converged ? "" : "; the fit did not converge");
+    head += due ? fmt::format("#   remaining life from {} h: 0 h, due now ({})\n", last.hours, q.criterion)
+                : fmt::format("#   remaining life from {} h: P10 {:.0f} h ({}), P50 {:.0f} h ({}), P90 {:.0f} h ({}); {}\n",
+                              last.hours, q.p10_h, date(q.p10_h), q.p50_h, date(q.p50_h), q.p90_h, date(q.p90_h),
+                              q.criterion);
+    dir.write_text("calibrated.toml", head + config_to_toml(cal, true));
     const std::vector<ProfileRecord> fitted = fitted_profiles(p, r.params);
     const std::string tmp = dir.temp_path("calibrate.h5");
     {

@@ -708,7 +708,13 @@ TEST_CASE("calibrate recovers the wear factor of synthetic scans from the comman
   }
   // the calibrated configuration carries the fitted factor and loads again
   REQUIRE(fs::exists(dir / "cal" / "calibrated.toml"));
-  CHECK_THAT(read_file((dir / "cal" / "calibrated.toml").string()), Catch::Contains("calibration_gravitational"));
+  const std::string cal_toml = read_file((dir / "cal" / "calibrated.toml").string());
+  CHECK_THAT(cal_toml, Catch::Contains("calibration_gravitational"));
+  // with the fit's factor, its uncertainty and the life it gives, as comments
+  CHECK_THAT(cal_toml, Catch::Contains(fmt::format("#   abrasion: factor {:.4g}, 1-sigma x/ {:.3f}",
+                                                   params[0]["factor"].num(), std::exp(params[0]["sigma_ln"].num()))));
+  CHECK_THAT(cal_toml, Catch::Contains("P50 " + fmt::format("{:.0f}", j["remaining_hours_p50"].num()) + " h (" +
+                                       j["relining_date_p50"].str() + ")"));
   const RunResult again = run_linerlife("geometry " + (dir / "cal" / "calibrated.toml").string() + " --json");
   CHECK(again.code == 0);
 
