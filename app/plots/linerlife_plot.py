@@ -4,8 +4,9 @@
 Usage: linerlife_plot.py KIND RESULTS.h5 OUT_DIR
 
 KIND names a module plot_KIND.py next to this file whose draw(h5, out) makes
-the charts. Every PNG is written under a temporary name and renamed, so a
-crash never leaves a half-written picture. Needs Debian's python3-matplotlib
+the charts. Every PNG is written under a temporary name, and the charts are
+renamed together once all are drawn: a crash never leaves a half-written
+picture, and a file that fails part-way leaves none. Needs Debian's python3-matplotlib
 and python3-h5py (run with /usr/bin/python3).
 
 Before drawing, the datasets the module's required_rows(h5) names must be
@@ -43,7 +44,7 @@ def main(argv):
         return 2
     import h5py
 
-    from plot_common import NotFinite, check_finite
+    from plot_common import NotFinite, check_finite, commit_charts, discard_charts
 
     with h5py.File(results, "r") as h5:
         try:
@@ -53,6 +54,7 @@ def main(argv):
                     raise KeyError(f"{path} is empty")
             check_finite(h5, module.finite_datasets(h5) if hasattr(module, "finite_datasets") else [])
             module.draw(h5, out)
+            commit_charts()  # all the charts, or none
         except KeyError as e:  # h5py: a missing object or attribute
             print(f"linerlife_plot: {results} is damaged or incomplete for a {kind} results file: {e}", file=sys.stderr)
             return 3
@@ -62,6 +64,8 @@ def main(argv):
         except OSError as e:  # a chart could not be written (save() left no temporary)
             print(f"cannot write {e.filename or out}: {e.strerror or e}", flush=True)
             return 5
+        finally:
+            discard_charts()  # the temporaries of a file that failed part-way
     return 0
 
 

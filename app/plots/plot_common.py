@@ -43,26 +43,51 @@ def surface_datasets(group):
     return [f"{group}/nodes"]
 
 
+# The charts drawn so far, as (temporary, final) paths: save() writes each
+# under a temporary name and commit_charts() renames them all once every chart
+# of the file is drawn, so that a file that fails part-way (a dataset missing
+# from its third chart) leaves none of them (a review, 2026-12-06: two of three
+# charts were left, with exit 2 saying the file was damaged).
+_pending = []
+
+
 def save(fig, out_dir, name):
-    """Saves fig as out_dir/name atomically (temporary file, then rename)."""
+    """Draws fig into a temporary file for out_dir/name; commit_charts() gives it its name."""
     final = os.path.join(out_dir, name)
     tmp = os.path.join(out_dir, f".{name}.tmp.{os.getpid()}.png")
+    _pending.append((tmp, final))
     try:
         fig.savefig(tmp, dpi=130, bbox_inches="tight")
-        os.replace(tmp, final)
-    except BaseException as e:
-        # no temporary left behind (a kill -9 still can: the next run's
-        # OutputDir::prepare() removes those of dead processes)
+    except OSError as e:  # name the chart, not its temporary
+        raise OSError(e.errno, e.strerror, final) from e
+    finally:
+        import matplotlib.pyplot as plt
+
+        plt.close(fig)
+
+
+def discard_charts():
+    """Removes the temporaries of the charts drawn so far (a kill -9 still can leave them: the next run's
+    OutputDir::prepare() removes those of dead processes)."""
+    for tmp, _ in _pending:
         try:
             os.remove(tmp)
         except OSError:
             pass
-        if isinstance(e, OSError):  # name the chart, not its temporary
-            raise OSError(e.errno, e.strerror, final) from e
-        raise
-    import matplotlib.pyplot as plt
+    _pending.clear()
 
-    plt.close(fig)
+
+def commit_charts():
+    """Gives every chart drawn its name. A chart whose name a folder holds is refused before any is renamed
+    (OSError naming it), so the charts are written all or none."""
+    try:
+        for _, final in _pending:
+            if os.path.isdir(final):
+                raise IsADirectoryError(21, "Is a directory", final)
+        for tmp, final in _pending:
+            os.replace(tmp, final)
+    finally:
+        discard_charts()
 
 
 def surface(h5, group="/surface"):

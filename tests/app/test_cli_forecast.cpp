@@ -372,6 +372,26 @@ TEST_CASE("plot refuses a results file whose drawn data hold NaN or infinite val
       CHECK(std::distance(fs::directory_iterator(bad_dir), fs::directory_iterator()) == 1);  // bad.h5 alone
     }
   }
+  // A dataset missing that only the third chart draws: refused with nothing
+  // drawn (a review, 2026-12-06: the first two charts were left, beside the
+  // file or in the new folder, with exit 2)
+  {
+    const fs::path bad_dir = dir / "bad", bad = bad_dir / "bad.h5";
+    fs::remove_all(bad_dir);
+    fs::create_directories(bad_dir);
+    fs::copy_file(dir / "run" / "forecast.h5", bad);
+    const std::string py = "/usr/bin/python3 -c \"import h5py; f = h5py.File('" + bad.string() +
+                           "', 'r+'); del f['/forecast/history/net_power_kw']; f.close()\"";
+    REQUIRE(std::system(py.c_str()) == 0);
+    for (const std::string& out : {" --out " + (dir / "charts" / "sub").string(), std::string()}) {
+      r = run_linerlife("plot " + bad.string() + out);
+      INFO(out << "\n" << r.err);
+      CHECK(r.code == 2);
+      CHECK_THAT(r.err, Catch::Contains("is damaged or incomplete"));
+      CHECK_FALSE(fs::exists(dir / "charts"));
+      CHECK(std::distance(fs::directory_iterator(bad_dir), fs::directory_iterator()) == 1);  // bad.h5 alone
+    }
+  }
   // (undamaged files draw: "forecast --out writes the results file and its charts, and plot redraws them")
   fs::remove_all(dir);
 }
