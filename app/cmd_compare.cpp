@@ -277,8 +277,12 @@ int run_compare(const CompareOptions& o) {
     k.mean_direct_impacts = time_mean(k.result.history, &LifeRecord::direct_impact_fraction);
     k.caveats = {worn_power_caveat(k.config.model.charge, k.result.history),
                  explicit_step_caveat(k.config.forecast, k.config.mill.speed_rpm, k.result)};
-    for (const std::string& x : k.caveats)
-      if (!x.empty()) note(fmt::format("linerlife: note: {}: {}", k.label, x));
+  }
+  {
+    std::vector<std::string> labels;
+    std::vector<std::vector<std::string>> caveats;
+    for (const Case& k : cases) labels.push_back(k.label), caveats.push_back(k.caveats);
+    for (const std::string& line : case_note_lines(labels, caveats)) note(line);
   }
 
   // designs ranked by the layer model: check the short list with the DEM

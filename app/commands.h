@@ -123,6 +123,19 @@ std::string worn_power_caveat(const std::string& charge_model, const std::vector
                               const std::vector<double>& net_power_kw);
 /// The same from a forecast's history.
 std::string worn_power_caveat(const std::string& charge_model, const std::vector<LifeRecord>& history);
+/// The worn-power caveat's explanation, after its figures (the DEM figures:
+/// docs/models/layer-worn.md, "The DEM on the same worn profiles":
+/// bench_layer_worn --model dem on the bundled forecast's profiles at 0, 3000,
+/// 6000 and 9173 h, 20 revolutions each).
+inline constexpr const char* kWornPowerCaveatWhy =
+    "its power on worn liners is not validated: on the bundled Qiu mill's worn profiles the 2D DEM's changes by at "
+    "most +3.1 % where the layer model's rises by up to +57 % (docs/models/layer-worn.md). Read the power history as "
+    "the layer model's, not as the mill motor's load (the liner loads come from the same charge)";
+/// compare's notes on its cases, one line per caveat ("linerlife: note:
+/// LABEL: TEXT"), in case order; the worn-power caveat's explanation is given
+/// whole once and then referred to, each case keeping its own figures.
+std::vector<std::string> case_note_lines(const std::vector<std::string>& labels,
+                                         const std::vector<std::vector<std::string>>& caveats);
 /// A caveat on a forecast from a measured profile whose points are closer
 /// than kDenseProfileCaveatSpacingM (the median spacing), or "" if none is
 /// due. Such a profile keeps every point as a surface node until the first

@@ -169,12 +169,27 @@ std::string worn_power_caveat(const std::string& charge_model, const std::vector
   // The DEM figures: docs/models/layer-worn.md, "The DEM on the same worn
   // profiles" (bench_layer_worn --model dem on the bundled forecast's
   // profiles at 0, 3000, 6000 and 9173 h, 20 revolutions each).
-  return fmt::format(
-      "the layer model's net power moves by {:+.0f} % over this life ({:.0f} kW new, {:.0f} kW at {:.0f} h); its power on "
-      "worn liners is not validated: on the bundled Qiu mill's worn profiles the 2D DEM's changes by at most +3.1 % where "
-      "the layer model's rises by up to +57 % (docs/models/layer-worn.md). Read the power history as the layer model's, "
-      "not as the mill motor's load (the liner loads come from the same charge)",
-      100.0 * dev, p0, net_power_kw[worst], hours[worst]);
+  return fmt::format("the layer model's net power moves by {:+.0f} % over this life ({:.0f} kW new, {:.0f} kW at {:.0f} h); {}",
+                     100.0 * dev, p0, net_power_kw[worst], hours[worst], kWornPowerCaveatWhy);
+}
+
+std::vector<std::string> case_note_lines(const std::vector<std::string>& labels,
+                                         const std::vector<std::vector<std::string>>& caveats) {
+  std::vector<std::string> lines;
+  std::string explained_in;  // the first case whose worn-power note was printed whole
+  for (size_t i = 0; i < labels.size() && i < caveats.size(); ++i)
+    for (std::string x : caveats[i]) {
+      if (x.empty()) continue;
+      const size_t why = x.find(kWornPowerCaveatWhy);
+      if (why != std::string::npos) {
+        if (explained_in.empty()) explained_in = labels[i];
+        else
+          x.replace(why, std::string::npos,
+                    fmt::format("its power on worn liners is not validated (the note on {})", explained_in));
+      }
+      lines.push_back(fmt::format("linerlife: note: {}: {}", labels[i], x));
+    }
+  return lines;
 }
 
 std::string worn_power_caveat(const std::string& charge_model, const std::vector<LifeRecord>& history) {

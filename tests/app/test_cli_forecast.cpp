@@ -191,6 +191,20 @@ TEST_CASE("the layer model's power history carries a caveat when it departs from
   CHECK(worn_power_caveat("layer", h, {6000, nan, 9000, 6100}).find("+50 %") != std::string::npos);
 }
 
+TEST_CASE("compare explains the worn-power caveat once and gives each case its figures", "[app][compare]") {
+  const std::vector<double> h{0, 1000, 2000, 3000};
+  const std::string a = worn_power_caveat("layer", h, {5959, 6500, 9446, 8528});
+  const std::string b = worn_power_caveat("layer", h, {6000, 5500, 4800, 5900});
+  const std::vector<std::string> l = case_note_lines({"x=1", "x=2", "x=3"}, {{a, ""}, {"", "step"}, {b}});
+  REQUIRE(l.size() == 3);
+  CHECK(l[0] == "linerlife: note: x=1: " + a);  // whole, the first time
+  CHECK(l[1] == "linerlife: note: x=2: step");
+  CHECK(l[2].find("x=3: the layer model's net power moves by -20 % over this life") != std::string::npos);
+  CHECK(l[2].find("(docs/models/layer-worn.md)") == std::string::npos);
+  CHECK_THAT(l[2], Catch::EndsWith("its power on worn liners is not validated (the note on x=1)"));
+  CHECK(case_note_lines({"x=1"}, {{""}}).empty());
+}
+
 TEST_CASE("a measured profile denser than 1 mm carries a caveat", "[app][forecast]") {
   LinerDesign L;
   CHECK(dense_profile_caveat(L).empty());  // parametric
