@@ -14,16 +14,31 @@ def finite_datasets(h5):
             "/forecast/history/min_thickness_m", "/forecast/history/liner_mass_kg_per_m"]
 
 
-def criteria(h5):
-    """The [forecast] relining criteria of the run (its /config), {} where it cannot be read."""
+def config_table(h5):
+    """The run's configuration (its /config) as a dict, {} where it cannot be read."""
     try:
         import tomllib
         text = h5["/config"][()]
-        cfg = tomllib.loads(text.decode() if isinstance(text, bytes) else text)
-        f = cfg.get("forecast", {})
+        return tomllib.loads(text.decode() if isinstance(text, bytes) else text)
+    except Exception:  # an older Python without tomllib, or a /config it cannot read
+        return {}
+
+
+def charge_model_name(h5):
+    """"the layer model V-1.2", "the empirical model", "the dem model" from the run's [model], "the charge model"
+    where it cannot be read."""
+    m = config_table(h5).get("model", {})
+    name = m.get("charge", "charge")
+    return f"the layer model V-{m['variant']}" if name == "layer" and "variant" in m else f"the {name} model"
+
+
+def criteria(h5):
+    """The [forecast] relining criteria of the run (its /config), {} where it cannot be read."""
+    f = config_table(h5).get("forecast", {})
+    try:
         return {k: float(f[k]) for k in ("min_lifter_height_m", "min_plate_thickness_m", "max_face_angle_leading_deg")
                 if k in f}
-    except Exception:  # an older Python without tomllib, or a /config it cannot read: no lines
+    except (TypeError, ValueError):  # a value that is not a number: no lines
         return {}
 
 
@@ -102,5 +117,10 @@ def draw(h5, out):
     axes[2].legend(fontsize=8)
     for a in axes:
         a.set_xlabel("operating hours")
+    # the power is the charge model's on the worn profile, not a motor load
+    # (the same note as the run's caveat, app/common.cpp worn_power_caveat())
+    model = charge_model_name(h5)
+    fig.suptitle(f"Charge along the life by {model} (the power is the model's net power, not the mill motor's "
+                 "load)", fontsize=10)
     fig.tight_layout()
     save(fig, out, "forecast_charge.png")
