@@ -397,6 +397,12 @@ class Life {
         res_.stats.wall_s = wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         res_.operating_hours = t_ / 3600.0;
         res_.criterion = "failed";
+        res_.reached = false;
+        // where it stopped, on the calendar as a finished run's end (a review,
+        // 2026-12-06: the partial file said end_date 2000-01-01, 0 days, 0 t)
+        res_.calendar_days = spec_.calendar.calendar_days_for(res_.operating_hours);
+        res_.relining_date = spec_.calendar.date_after(res_.operating_hours);
+        res_.tonnes = res_.operating_hours * spec_.throughput_t_per_h;
         res_.final_surface = cell_.displaced(y_.data());
         *hooks_.partial = res_;
       }

@@ -225,6 +225,14 @@ TEST_CASE("a forecast that fails part-way exits 3 and leaves its results marked 
   const H5Reader h5((out / "forecast.h5").string());
   CHECK(h5.attr_int("/", "partial") == 1);
   CHECK(h5.attr_int("/forecast", "partial") == 1);
+  // its end on the calendar is where it stopped (it said 2000-01-01, 0 days, 0 t)
+  const double stopped_h = h5.attr_double("/forecast", "operating_hours");
+  CHECK(stopped_h > 0);
+  CHECK(h5.attr_double("/forecast", "calendar_days") > 0);
+  CHECK(h5.attr_double("/forecast", "tonnes") > 0);
+  CHECK(h5.attr_string("/forecast", "end_date") > "2027-01-01");  // after resumable_qiu()'s start_date
+  CHECK(h5.attr_string("/forecast", "end_date") < w["end_date"].str());
+  CHECK(h5.attr_string("/forecast", "relining_date").empty());
   // the partial history is the start of the whole run's, up to the failure
   const std::vector<double> hours = h5.doubles("/forecast/history/hours");
   const std::vector<double> whole_hours = w["history"]["hours"].nums();

@@ -455,6 +455,12 @@ TEST_CASE("a failing forecast hands back its partial results", "[forecast][failu
   CHECK(partial.criterion == "failed");
   CHECK(partial.history.size() >= 1);
   CHECK(partial.operating_hours > 0);
+  // the calendar where it stopped, as a finished run's end
+  CHECK_FALSE(partial.reached);
+  CHECK(partial.calendar_days == sp.calendar.calendar_days_for(partial.operating_hours));
+  CHECK(partial.calendar_days > 0);
+  CHECK(partial.relining_date == sp.calendar.date_after(partial.operating_hours));
+  CHECK(partial.tonnes == partial.operating_hours * sp.throughput_t_per_h);
 }
 
 namespace {
