@@ -221,6 +221,9 @@ int run_charge(const ChargeOptions& o) {
         .set("substeps", r.stats.substeps)
         .set("elements", r.stats.elements)
         .set("n_impacts", static_cast<long long>(r.loads.impacts.size()));
+    // the model's notes, as on the standard error (a sub-stepped time step, a
+    // known defect where it acts): a script reading --json sees them too
+    j.set("notes", caveats_json(r.notes));  // [{"text": ...}], as forecast's caveats
     if (r.stats.particle_steps_per_s > 0)  // particle models only (docs/models/dem.md)
       j.set("particles", r.stats.elements)
           .set("particle_steps_per_s", r.stats.particle_steps_per_s)

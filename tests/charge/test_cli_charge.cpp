@@ -81,6 +81,10 @@ TEST_CASE("charge --model empirical --variant and the clockwise pilot mill", "[c
                     "/data/mills/pilot_test_01.toml --variant 1.1 --revolutions 1 --json");
   REQUIRE(r.code == 0);
   CHECK_THAT(r.out, Catch::Contains("\"variant\": \"1.1\""));
+  // the model's notes are in the JSON as on the standard error (a review,
+  // 2026-12-06: only on stderr): this pilot's 10 ms step is sub-stepped
+  CHECK_THAT(r.err, Catch::Contains("sub-stepped 2 times (0.005 s)"));
+  CHECK_THAT(r.out, Catch::Contains("\"notes\": [") && Catch::Contains("sub-stepped 2 times (0.005 s)"));
   // a clockwise mill, in the same physical frame: toe lower right, shoulder upper left
   CHECK(json_number(r.out, "toe_deg") > 270);
   CHECK(json_number(r.out, "shoulder_deg") > 90);
