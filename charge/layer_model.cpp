@@ -1687,7 +1687,19 @@ void LayerSim::deposit(int id, double theta, double tau, const V& v_land) {
     // No room inside the allowed layers (version 1.2: inside r_i): the
     // element is moved towards the toe, against the rotation (thesis §4.6.2).
     int sk;
-    if (!toe_ward_room(theta, tau, false, k, sk)) throw SimulationError("layer model: no room left for a landing element");
+    // Every layer the model lets the charge use is full: the charge has
+    // spread round the shell, as it does near critical speed (a review,
+    // 2026-12-06: a mill set at 0.995 of critical reached 1.000 as its liner
+    // wore, and the message said nothing of it)
+    if (!toe_ward_room(theta, tau, false, k, sk))
+      throw SimulationError(fmt::format(
+          "layer model: no room left for a landing element: every layer the charge may fill is full (this liner: "
+          "{:.4f} of critical speed at an effective diameter of {:.3f} m){}",
+          phi_, 2 * R_eff_,
+          phi_ >= 0.95 ? "; near critical speed the charge centrifuges: run the mill slower ([mill] speed_rpm or "
+                         "speed_fraction_critical; a speed given as a fraction of critical rises as the liner wears, "
+                         "since the rpm it sets is the new liner's)"
+                       : ""));
   }
   // Foot stability, 1: momentum (thesis §4.4.2, Radziszewski 1998). The
   // element keeps the part of its velocity along the charge surface relative

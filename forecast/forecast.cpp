@@ -481,7 +481,13 @@ class Life {
 
   void sample_at(const double* y, double revolutions) {
     const LinerSurface ring = cell_.displaced(y);
-    last_ = rates_.sample(ring, revolutions);
+    try {
+      last_ = rates_.sample(ring, revolutions);
+    } catch (const SimulationError& e) {
+      // when along the life the charge model failed (a review, 2026-12-06:
+      // "no room left for a landing element" alone, from 1,900 h of wear)
+      throw SimulationError(fmt::format("at {:.0f} operating hours, on the liner worn so far: {}", t_ / 3600.0, e.what()));
+    }
     if (static_cast<int>(last_.element_rate_m_s.size()) != ring.n_elements())
       throw std::logic_error("rate provider: one rate per element expected");
     for (double r : last_.element_rate_m_s)

@@ -205,6 +205,30 @@ TEST_CASE("compare explains the worn-power caveat once and gives each case its f
   CHECK(case_note_lines({"x=1"}, {{""}}).empty());
 }
 
+// A review (2026-12-06): a forecast of the bundled mill set at 0.995 of
+// critical failed after about 2,000 h, where its worn liner had brought it to
+// 1.0001, with only "layer model: no room left for a landing element". The
+// failure now says when, how near critical the worn liner is, and what to do.
+TEST_CASE("a forecast that fails as its worn liner reaches critical speed says when and why", "[app][cli][forecast]") {
+  const fs::path dir = temp_dir("fc_critical");
+  const std::string text = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/qiu2001_sag.toml");
+  REQUIRE(text.find("speed_rpm = 10.36\n") != std::string::npos);
+  write_file(dir / "m.toml", std::regex_replace(text, std::regex("speed_rpm = 10.36\n"), "speed_fraction_critical = 0.995\n"));
+  const RunResult r = run_linerlife("forecast " + (dir / "m.toml").string() + " --quiet", 120);
+  INFO(r.err);
+  CHECK(r.code == 3);
+  const std::regex msg("linerlife: simulation failed: at ([0-9]+) operating hours, on the liner worn so far: layer model: "
+                       "no room left for a landing element: every layer the charge may fill is full \\(this liner: "
+                       "([0-9.]+) of critical speed at an effective diameter of [0-9.]+ m\\); near critical speed the "
+                       "charge centrifuges: run the mill slower");
+  std::smatch m;
+  REQUIRE(std::regex_search(r.err, m, msg));
+  CHECK(std::stod(m[1]) > 500);    // worn for a while: the new liner runs (at 0.995)
+  CHECK(std::stod(m[2]) > 0.995);  // the worn liner is nearer critical than the new one
+  CHECK(r.out.empty());
+  fs::remove_all(dir);
+}
+
 TEST_CASE("a measured profile denser than 1 mm carries a caveat", "[app][forecast]") {
   LinerDesign L;
   CHECK(dense_profile_caveat(L).empty());  // parametric
