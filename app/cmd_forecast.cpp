@@ -150,6 +150,12 @@ int run_forecast_command(const ForecastOptions& o) {
         h5.close();
       }
       dir->commit(tmp, "forecast.h5");
+      // no charts for a partial file: an earlier run's would be read as its
+      // own (a review, 2026-12-06); `linerlife plot` draws them on request
+      for (const char* png : {"forecast_profiles.png", "forecast_lifter.png", "forecast_charge.png"}) {
+        std::error_code ec;
+        if (std::filesystem::is_regular_file(dir->path(png), ec)) std::filesystem::remove(dir->path(png), ec);
+      }
       std::cerr << fmt::format("linerlife: the results up to the failure are in {} (marked partial)\n",
                                dir->path("forecast.h5"));
     }

@@ -54,7 +54,7 @@ def main(argv):
                     raise KeyError(f"{path} is empty")
             check_finite(h5, module.finite_datasets(h5) if hasattr(module, "finite_datasets") else [])
             module.draw(h5, out)
-            commit_charts()  # all the charts, or none
+            commit_charts(out, getattr(module, "CHARTS", ()))  # all the charts, or none
         except KeyError as e:  # h5py: a missing object or attribute
             print(f"linerlife_plot: {results} is damaged or incomplete for a {kind} results file: {e}", file=sys.stderr)
             return 3

@@ -8,6 +8,10 @@ from matplotlib.collections import PatchCollection
 
 from plot_common import save, surface, surface_datasets
 
+# every chart this kind of file may draw (a chart of an earlier run left in the folder under one of these
+# names is removed: plot_common.commit_charts())
+CHARTS = ("charge_snapshot.png", "lifter_forces.png", "layer_speeds.png")
+
 
 def _attr(g, name, default=np.nan):
     return float(g.attrs[name]) if name in g.attrs else default

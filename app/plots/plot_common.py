@@ -77,15 +77,22 @@ def discard_charts():
     _pending.clear()
 
 
-def commit_charts():
+def commit_charts(out_dir, charts=()):
     """Gives every chart drawn its name. A chart whose name a folder holds is refused before any is renamed
-    (OSError naming it), so the charts are written all or none."""
+    (OSError naming it), so the charts are written all or none. Of `charts`, the names a kind of file may draw,
+    those not drawn this time are removed from out_dir: a chart an earlier run left there (the layer model's
+    lifter_forces.png beside an empirical charge.h5) would be read as this file's (a review, 2026-12-06)."""
     try:
         for _, final in _pending:
             if os.path.isdir(final):
                 raise IsADirectoryError(21, "Is a directory", final)
+        drawn = {os.path.basename(final) for _, final in _pending}
         for tmp, final in _pending:
             os.replace(tmp, final)
+        for name in charts:
+            old = os.path.join(out_dir, name)
+            if name not in drawn and os.path.isfile(old):
+                os.remove(old)
     finally:
         discard_charts()
 

@@ -4,6 +4,10 @@ import numpy as np
 
 from plot_common import save
 
+# every chart this kind of file may draw (a chart of an earlier run left in the folder under one of these
+# names is removed: plot_common.commit_charts())
+CHARTS = ("compare.png",)
+
 
 def vary_keys(labels):
     """The keys of --vary cases read off their labels ("sec.key=v sec2.key2=w"), if every case sets the same

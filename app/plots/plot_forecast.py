@@ -6,6 +6,10 @@ import numpy as np
 
 from plot_common import lifter_frame, save
 
+# every chart this kind of file may draw (a chart of an earlier run left in the folder under one of these
+# names is removed: plot_common.commit_charts())
+CHARTS = ("forecast_profiles.png", "forecast_lifter.png", "forecast_charge.png")
+
 
 def finite_datasets(h5):
     """The datasets drawn that must hold finite numbers (linerlife_plot.py checks them before drawing). The other

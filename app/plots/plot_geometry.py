@@ -6,6 +6,10 @@ from matplotlib.patches import Rectangle
 
 from plot_common import lifter_frame, save, segment_chain, surface, surface_datasets
 
+# every chart this kind of file may draw (a chart of an earlier run left in the folder under one of these
+# names is removed: plot_common.commit_charts())
+CHARTS = ("liner_segment.png", "liner_ring.png")
+
 
 def finite_datasets(h5):
     """The datasets drawn that must hold finite numbers (linerlife_plot.py checks them before drawing)."""

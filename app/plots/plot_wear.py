@@ -12,6 +12,11 @@ import numpy as np
 
 from plot_common import save, segment_chain, surface, surface_datasets
 
+# every chart this kind of file may draw (a chart of an earlier run left in the folder under one of these
+# names is removed: plot_common.commit_charts())
+CHARTS = ("wear_profiles.png", "wear_impact_contribution.png", "wear_impact_only.png", "wear_history.png",
+          "wear_rates.png")
+
 
 def bottom_frame(chain, centre):
     """Mill-frame points of a segment centred on `centre` -> turned so that the

@@ -211,6 +211,9 @@ TEST_CASE("a forecast that fails part-way exits 3 and leaves its results marked 
   const long long drives = static_cast<long long>(w["charge_redrives"].num());
   REQUIRE(drives >= 6);
   const long long fail_at = drives / 2;
+  // a chart an earlier run left in the folder: not to be read as the partial file's
+  fs::create_directories(out);
+  write_file(out / "forecast_lifter.png", "an earlier run's chart");
   ::setenv("LINERLIFE_FAIL_AT_DRIVE", std::to_string(fail_at).c_str(), 1);
   const RunResult r = run_linerlife("forecast " + cfg.string() + " --json --quiet --out " + out.string(), 300);
   ::unsetenv("LINERLIFE_FAIL_AT_DRIVE");
@@ -222,6 +225,7 @@ TEST_CASE("a forecast that fails part-way exits 3 and leaves its results marked 
   CHECK(r.out.empty());  // no JSON result for a failed run
   REQUIRE(fs::exists(out / "forecast.h5"));
   CHECK(temporaries(out).empty());
+  CHECK_FALSE(fs::exists(out / "forecast_lifter.png"));  // removed with the partial file written
   const H5Reader h5((out / "forecast.h5").string());
   CHECK(h5.attr_int("/", "partial") == 1);
   CHECK(h5.attr_int("/forecast", "partial") == 1);

@@ -140,6 +140,13 @@ TEST_CASE("charge --out writes the results file and the charts", "[charge][cli]"
   const size_t n = fread(buf, 1, sizeof buf - 1, p);
   CHECK(pclose(p) == 0);
   CHECK(std::string(buf, n) == "ok\n");
+  // the empirical model into the same folder draws no lifter forces: the
+  // layer run's chart goes with its charge.h5 (a review, 2026-12-06: it stayed
+  // beside the empirical results)
+  const RunResult e = run_linerlife("charge --model empirical --out " + (dir / "run").string());
+  REQUIRE(e.code == 0);
+  CHECK(fs::exists(dir / "run" / "charge_snapshot.png"));
+  CHECK_FALSE(fs::exists(dir / "run" / "lifter_forces.png"));
   fs::remove_all(dir);
 }
 
