@@ -72,7 +72,11 @@ int run_wear_command(const WearOptions& o) {
   Mill mill = c.mill;
   if (!o.rotation.empty()) mill.rotation = o.rotation == "cw" ? Rotation::Cw : Rotation::Ccw;
   const ChargeModelEntry& entry = find_charge_model(c.model.charge);
-  make_wear_model(c.wear, entry);  // the law-model combination, before any work
+  try {
+    make_wear_model(c.wear, entry);  // the law-model combination, before any work
+  } catch (const InputError& e) {
+    rethrow_located(c, e);  // the [wear] laws line of the file
+  }
   warn_wear_loads(c);
   if (!o.out.empty()) check_output_dir_writable(o.out, {"wear.h5"});
 

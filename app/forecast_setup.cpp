@@ -26,7 +26,12 @@ std::unique_ptr<RateProvider> make_scaled_provider(const Config& c, double kc, d
   spec.calibration_centrifugal *= kc;
   spec.calibration_gravitational *= kg;
   spec.calibration_impact *= ki;
-  WearModel wear = make_wear_model(spec, entry);
+  WearModel wear;
+  try {
+    wear = make_wear_model(spec, entry);
+  } catch (const InputError& e) {
+    rethrow_located(c, e);  // the [wear] laws line of the file
+  }
   validate_liner_material(c.material);
   return std::make_unique<ChargeWearRate>(c.mill, c.charge, c.model, entry, std::move(wear), c.material, 1);
 }

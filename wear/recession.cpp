@@ -76,18 +76,27 @@ WearModel make_wear_model(const WearSpec& spec, const ChargeModelEntry& charge_m
   WearModel m;
   m.spec = spec;
   m.charge_model = charge_model.name;
+  // the charge models that give what a law needs, for the message
+  auto models_with = [](bool ChargeModelEntry::*what) {
+    std::string list;
+    for (const ChargeModelEntry& cm : charge_models())
+      if (cm.*what) list += fmt::format("{}\"{}\"", list.empty() ? "" : ", ", cm.name);
+    return list;
+  };
   for (const std::string& name : spec.laws) {
     const WearLawEntry& e = find_wear_law(name);
     if (e.kind == WearKind::Impact && !charge_model.resolves_impacts)
       throw InputError("wear.laws",
-                       fmt::format("wear law \"{}\" needs impact spectra, but the charge model \"{}\" gives none; use "
-                                   "a charge model that resolves impacts or remove the impact law",
-                                   name, charge_model.name));
+                       fmt::format("[wear] laws: wear law \"{}\" needs impact spectra, but [model] charge = \"{}\" "
+                                   "gives none; allowed with it: laws without an impact/ law; or a charge model that "
+                                   "resolves impacts ({})",
+                                   name, charge_model.name, models_with(&ChargeModelEntry::resolves_impacts)));
     if (e.kind == WearKind::Abrasion && !charge_model.resolves_abrasion)
       throw InputError("wear.laws",
-                       fmt::format("wear law \"{}\" needs the sliding loads on the liner, but the charge model \"{}\" "
-                                   "gives none",
-                                   name, charge_model.name));
+                       fmt::format("[wear] laws: wear law \"{}\" needs the sliding loads on the liner, but [model] "
+                                   "charge = \"{}\" gives none; allowed with it: laws without an abrasion/ law; or a "
+                                   "charge model that gives them ({})",
+                                   name, charge_model.name, models_with(&ChargeModelEntry::resolves_abrasion)));
     if (name == "abrasion/radziszewski") {
       m.radziszewski = true;
       m.radziszewski_tan_theta = law_parameter(spec, param(e, "radziszewski_tan_theta"));

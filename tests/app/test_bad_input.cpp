@@ -881,3 +881,23 @@ TEST_CASE("strings with a NUL are refused and values are quoted printable and sh
   }
   fs::remove_all(dir);
 }
+
+// A robustness review (2026-12-06): a wear law the charge model gives no loads
+// for was refused without the file, the line or what is allowed.
+TEST_CASE("a wear law the charge model gives no loads for is refused at its line with what is allowed",
+          "[app][cli][input]") {
+  const fs::path dir = temp_dir("law_model");
+  write_file(dir / "e.toml", defaults_with("charge = ", "charge = \"empirical\""));
+  for (const std::string cmd : {"forecast", "wear"}) {
+    const RunResult r = run_linerlife(cmd + " " + (dir / "e.toml").string() + " --out " + (dir / "out").string());
+    INFO(cmd << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("e.toml:") &&
+                          Catch::Contains(": [wear] laws: wear law \"abrasion/radziszewski\" needs the sliding loads "
+                                          "on the liner, but [model] charge = \"empirical\" gives none; allowed with it: "
+                                          "laws without an abrasion/ law; or a charge model that gives them (\"layer\", "
+                                          "\"dem\")"));
+    CHECK_FALSE(fs::exists(dir / "out"));
+  }
+  fs::remove_all(dir);
+}
