@@ -106,6 +106,9 @@ void ParticleIndicators::finish(Indicators& out) const {
   const double sense = g_.sense >= 0 ? 1.0 : -1.0;
   const int sgn = sense > 0 ? 1 : -1;
   out.toe_deg = out.shoulder_deg = out.com_angle_deg = out.com_radius_m = out.charge_area_m2 = nan;
+  // a particle model has no inner surface radius of Morrell's eq. 4.14: not
+  // given (null in --json), not 0 m (a review, 2026-12-06)
+  out.inner_radius_m = nan;
   out.n_layers = out.n_trajectories = 0;
   out.layer_speed_rpm.clear();
   out.lifter_force_angle_deg.clear();

@@ -91,6 +91,18 @@ TEST_CASE("charge --model empirical --variant and the clockwise pilot mill", "[c
   CHECK(json_number(r.out, "shoulder_deg") < 180);
 }
 
+TEST_CASE("charge --json gives null for an indicator the model does not give", "[charge][cli]") {
+  // the DEM has no inner surface radius (Morrell's eq. 4.14): it said 0 m (a
+  // review, 2026-12-06); the layer and empirical models give one
+  const std::string pilot = std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/pilot_test_13.toml";  // ~60 discs
+  RunResult r = run_linerlife("charge " + pilot + " --model dem --revolutions 1 --json");
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out, Catch::Contains("\"inner_radius_m\": null"));
+  r = run_linerlife("charge " + pilot + " --model layer --revolutions 1 --json");
+  REQUIRE(r.code == 0);
+  CHECK(json_number(r.out, "inner_radius_m") > 0);
+}
+
 TEST_CASE("charge's summary says how each model's gross power is made up", "[charge][cli]") {
   // Morrell's gross carries his k = 1.26 on the net (docs/models/empirical.md);
   // the layer model's and the DEM's is no-load + net (docs/models/indicators.md):
