@@ -711,3 +711,31 @@ TEST_CASE("the direct-impact fraction is the share of the averaged landings, wha
   CHECK(f1 <= 1.0);
   CHECK(f3 / f1 == Approx(1.0).margin(0.15));
 }
+
+// A review (2026-12-06) found two liners on which the layer model is far from
+// the 2D DEM without saying so (docs/models/layer.md, "Lifters the layer model
+// is not checked on"): lifters lower than half a ball, and rows far apart.
+TEST_CASE("the layer model says when its lifters are lower than half a ball or their rows far apart",
+          "[charge][layer]") {
+  auto notes_of = [](Config c) {
+    const LinerSurface s = build_liner_surface(c.mill, c.liner);
+    std::string all;
+    for (const std::string& n : run_model("layer", charge_input(c, s, 0.5, 0.5)).notes) all += n + "\n";
+    return all;
+  };
+  const Config qiu = mill_config("qiu2001_sag.toml");
+  const std::string low = "less than half a media diameter", wide = "media diameters apart";
+  const std::string plain = notes_of(qiu);
+  CHECK(plain.find(low) == std::string::npos);
+  CHECK(plain.find(wide) == std::string::npos);
+  Config c = qiu;
+  c.liner.design.lifter_height_m = 0.06;  // 0.45 d
+  CHECK_THAT(notes_of(c), Catch::Contains("the lowest lifter is 60 mm, less than half a media diameter (133 mm)"));
+  c.liner.design.lifter_height_m = 0.07;  // 0.53 d
+  CHECK(notes_of(c).find(low) == std::string::npos);
+  c = qiu;
+  c.liner.segments = 8;
+  CHECK_THAT(notes_of(c), Catch::Contains("the 8 lifter rows are 30 media diameters apart"));
+  c.liner.segments = 16;  // 15 diameters
+  CHECK(notes_of(c).find(wide) == std::string::npos);
+}
