@@ -3,6 +3,7 @@
 #include <H5Cpp.h>
 #include <fmt/format.h>
 
+#include "app/output_dir.h"
 #include "geometry/errors.h"
 
 namespace linerlife {
@@ -37,8 +38,8 @@ void guarded(const std::string& file, bool& failed, const std::string& what, F&&
     f();
   } catch (const H5::Exception& e) {
     failed = true;
-    throw OutputError(fmt::format("cannot write {} ({}: {}): is the disk full or the file size limited?", file, what,
-                                  e.getDetailMsg()));
+    throw OutputError(fmt::format("cannot write {} ({}: {}): {}", file, what, e.getDetailMsg(),
+                                  write_failure_hint(file)));
   }
 }
 }  // namespace

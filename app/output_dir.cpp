@@ -115,13 +115,21 @@ void OutputDir::commit(const std::string& temp, const std::string& name) const {
   pending_.erase(temp);
 }
 
+std::string write_failure_hint(const std::string& file) {
+  std::error_code ec;
+  const fs::path dir = fs::path(file).parent_path();
+  if (!dir.empty() && !fs::is_directory(dir, ec))
+    return fmt::format("its folder {} no longer exists (removed during the run?)", dir.string());
+  return "is the disk full or the file size limited?";
+}
+
 void OutputDir::write_text(const std::string& name, const std::string& text) const {
   const std::string tmp = temp_path(name);
   {
     std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
     f << text;
     f.flush();
-    if (!f) throw OutputError(fmt::format("cannot write {}: is the disk full or the file size limited?", tmp));
+    if (!f) throw OutputError(fmt::format("cannot write {}: {}", tmp, write_failure_hint(tmp)));
   }
   commit(tmp, name);
 }

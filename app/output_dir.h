@@ -52,4 +52,10 @@ class OutputDir {
 void check_output_dir_writable(const std::string& dir, const std::vector<std::string>& names = {},
                                bool before_work = true);
 
+/// Why a file could not be written, for the message: "its folder DIR no
+/// longer exists (removed during the run?)" when it does not (a review,
+/// 2026-12-06: a folder removed under a running forecast was blamed on a full
+/// disk), otherwise "is the disk full or the file size limited?".
+std::string write_failure_hint(const std::string& file);
+
 }  // namespace linerlife

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "app/h5_writer.h"
+#include "geometry/errors.h"
 #include "cli_runner.h"
 
 using namespace linerlife::test;
@@ -350,4 +351,19 @@ TEST_CASE("every refusal exits 2 with its message and writes nothing", "[app][cl
     CHECK_FALSE(fs::exists(out));
   }
   fs::remove_all(dir);
+}
+
+// A review (2026-12-06): the output folder removed under a running forecast
+// failed the run with "is the disk full or the file size limited?".
+TEST_CASE("a file whose folder is gone is said to be so, not blamed on a full disk", "[app][output]") {
+  const std::filesystem::path dir = temp_dir("gone");
+  std::filesystem::remove_all(dir);
+  const std::string file = (dir / ".forecast.h5.tmp.1").string();
+  try {
+    linerlife::H5Writer h5(file);
+    FAIL("a file was made in a folder that does not exist");
+  } catch (const linerlife::OutputError& e) {
+    CHECK_THAT(e.what(), Catch::StartsWith("cannot write " + file));
+    CHECK_THAT(e.what(), Catch::EndsWith("its folder " + dir.string() + " no longer exists (removed during the run?)"));
+  }
 }
