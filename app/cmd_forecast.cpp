@@ -165,7 +165,8 @@ int run_forecast_command(const ForecastOptions& o) {
   note_drive_notes(f.notes, f.stats.charge_redrives);
   const LifeRecord& last = f.history.back();
   const std::vector<std::string> caveats{worn_power_caveat(c.model.charge, f.history), dense_profile_caveat(c.liner),
-                                         explicit_step_caveat(c.forecast, c.mill.speed_rpm, f)};
+                                         explicit_step_caveat(c.forecast, c.mill.speed_rpm, f),
+                                         few_drives_caveat(c.forecast, f)};
   const std::string caveat = caveat_lines(caveats);  // as forecast.h5 keeps them
 
   if (o.json) {
@@ -227,7 +228,8 @@ int run_forecast_command(const ForecastOptions& o) {
                              f.operating_hours, iso_date(c.forecast.calendar.start), f.calendar_days,
                              c.forecast.calendar.availability);
     if (c.forecast.throughput_t_per_h > 0)
-      std::cout << fmt::format("  ore processed            {:>10.3f} Mt at {} t/h\n", f.tonnes / 1e6,
+      std::cout << fmt::format("  ore processed            {:>10} at {} t/h\n",
+                               f.tonnes >= 1e5 ? fmt::format("{:.3f} Mt", f.tonnes / 1e6) : fmt::format("{:.4g} t", f.tonnes),
                                c.forecast.throughput_t_per_h);
     std::cout << fmt::format("  lifter height            {:>10.4f} m  -> {:.4f} m\n", first.lifter_height_m,
                              last.lifter_height_m);
@@ -235,8 +237,11 @@ int run_forecast_command(const ForecastOptions& o) {
                              num(last.face_angle_leading_deg, "{:.1f}"));
     std::cout << fmt::format("  thinnest point           {:>10.4f} m  -> {:.4f} m\n", first.min_thickness_m,
                              last.min_thickness_m);
-    std::cout << fmt::format("  net power                {:>10} kW -> {} kW\n", num(first.net_power_kw, "{:.0f}"),
-                             num(last.net_power_kw, "{:.0f}"));
+    // to the kW on a plant mill, to three figures on a laboratory one (a
+    // review, 2026-12-06: "0 kW -> 0 kW" for a 0.2 m mill)
+    auto kw = [](double v) { return num(v, std::abs(v) >= 100 ? "{:.0f}" : "{:.3g}"); };
+    std::cout << fmt::format("  net power                {:>10} kW -> {} kW\n", kw(first.net_power_kw),
+                             kw(last.net_power_kw));
     // the ode method's steps are CVODE's, the explicit methods' their own
     const std::string steps = c.forecast.method == ForecastMethod::Ode
                                   ? fmt::format("{} CVODE steps", f.stats.cvode_steps)

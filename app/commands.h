@@ -156,6 +156,14 @@ std::string dense_profile_caveat(const LinerDesign& liner);
 /// (docs/validation/forecast.md, "amplify" and "euler").
 constexpr double kExplicitStepCaveatFraction = 0.1;
 std::string explicit_step_caveat(const ForecastSpec& spec, double speed_rpm, const ForecastResult& f);
+/// A caveat on an ode forecast whose liner wore less than
+/// kFewDrivesCaveatRefreshes times refresh_tol_m over its life (the larger of
+/// the drop of the thinnest point and of the lifter height), or "" if none is
+/// due: the charge was re-driven only a few times, and the life may not have
+/// converged in refresh_tol_m (a review, 2026-12-06: a 0.2 m laboratory mill
+/// forecast 15,833 h on one charge drive, 13,711 h on 25).
+constexpr double kFewDrivesCaveatRefreshes = 5.0;
+std::string few_drives_caveat(const ForecastSpec& spec, const ForecastResult& f);
 /// A caveat as it goes into --json: an array of {text}, empty without one.
 Json caveats_json(const std::string& caveat);
 /// Several caveats (the empty ones left out) as one --json array of {text}.

@@ -234,6 +234,31 @@ std::string explicit_step_caveat(const ForecastSpec& spec, double speed_rpm, con
       method_name(spec.method), step_h, setting, 100.0 * step_h / f.operating_hours, f.operating_hours);
 }
 
+std::string few_drives_caveat(const ForecastSpec& spec, const ForecastResult& f) {
+  if (spec.method != ForecastMethod::Ode || spec.refresh_always || f.history.size() < 2) return "";
+  const LifeRecord& first = f.history.front();
+  double worn = 0;  // [m] the most the liner's thinnest point or lifter height went down
+  for (const LifeRecord& r : f.history) {
+    if (std::isfinite(r.min_thickness_m)) worn = std::max(worn, first.min_thickness_m - r.min_thickness_m);
+    if (std::isfinite(r.lifter_height_m) && std::isfinite(first.lifter_height_m))
+      worn = std::max(worn, first.lifter_height_m - r.lifter_height_m);
+  }
+  // (a relative 1e-6 below: a criterion met at exactly five tolerances of
+  // wear, 50 mm at 0.01 m, is not "less than five" by its rounding)
+  if (!(worn > 0) || worn >= kFewDrivesCaveatRefreshes * spec.refresh_tol_m * (1 - 1e-6)) return "";
+  // The figures: `linerlife forecast CFG --json` at refresh_tol_m = 0.002,
+  // 0.0004 and 0.0001 m (a 0.2 m mill, 5 mm balls, 3 mm plate), 0.002 and
+  // 0.0002 m (data/mills/pilot_test_01.toml with min_lifter_height_m = 0.015,
+  // min_plate_thickness_m = 0.001), 2026-12-06.
+  return fmt::format(
+      "the liner wore {:.1f} mm over this life, {:.1f} times refresh_tol_m = {:g} m, and the charge was driven {} "
+      "time{}: the life may not have converged in refresh_tol_m (a 0.2 m laboratory mill: 15,833 h on 1 drive, "
+      "13,711 h on 25 at refresh_tol_m = 0.0001 m; pilot test 1: 7,692 h on 3, 7,733 h on 27). Check it with a "
+      "refresh_tol_m of a fifth of the wear or less ({:.2g} m here)",
+      1000 * worn, worn / spec.refresh_tol_m, spec.refresh_tol_m, f.stats.charge_redrives,
+      f.stats.charge_redrives == 1 ? "" : "s", worn / kFewDrivesCaveatRefreshes);
+}
+
 std::string design_ranking_caveat(const std::vector<const Config*>& cases) {
   bool layer = false;
   for (const Config* c : cases) layer = layer || c->model.charge == "layer";
