@@ -5,7 +5,6 @@
 // several at once (--jobs), each on one thread, with the same results as one
 // after the other.
 #include <algorithm>
-#include <cstdlib>
 #include <cmath>
 #include <iostream>
 #include <mutex>
@@ -21,6 +20,7 @@
 #include "app/results.h"
 #include "forecast/parallel.h"
 #include "geometry/errors.h"
+#include "geometry/input_text.h"
 
 namespace linerlife {
 namespace {
@@ -151,10 +151,8 @@ std::vector<Case> vary_cases(const Config& base, const std::vector<std::string>&
     // the same value twice makes two identical cases under one label (a
     // review); numbers are compared as numbers (10 and 10.0 are one value)
     auto same_value = [](const std::string& x, const std::string& y) {
-      if (x == y) return true;
-      char *ex = nullptr, *ey = nullptr;
-      const double dx = std::strtod(x.c_str(), &ex), dy = std::strtod(y.c_str(), &ey);
-      return ex != x.c_str() && *ex == '\0' && ey != y.c_str() && *ey == '\0' && dx == dy;
+      double dx = 0, dy = 0;
+      return x == y || (parse_decimal(x, dx) && parse_decimal(y, dy) && dx == dy);
     };
     for (size_t i = 0; i < a.values.size(); ++i)
       for (size_t k = 0; k < i; ++k)

@@ -229,7 +229,7 @@ int run_forecast_command(const ForecastOptions& o) {
                              c.forecast.calendar.availability);
     if (c.forecast.throughput_t_per_h > 0)
       std::cout << fmt::format("  ore processed            {:>10} at {} t/h\n",
-                               f.tonnes >= 1e5 ? fmt::format("{:.3f} Mt", f.tonnes / 1e6) : fmt::format("{:.4g} t", f.tonnes),
+                               f.tonnes >= 1e5 ? num(f.tonnes / 1e6, "{:.3f} Mt") : num(f.tonnes, "{:.4g} t"),
                                c.forecast.throughput_t_per_h);
     std::cout << fmt::format("  lifter height            {:>10.4f} m  -> {:.4f} m\n", first.lifter_height_m,
                              last.lifter_height_m);
@@ -239,9 +239,8 @@ int run_forecast_command(const ForecastOptions& o) {
                              last.min_thickness_m);
     // to the kW on a plant mill, to three figures on a laboratory one (a
     // review, 2026-12-06: "0 kW -> 0 kW" for a 0.2 m mill)
-    auto kw = [](double v) { return num(v, std::abs(v) >= 100 ? "{:.0f}" : "{:.3g}"); };
-    std::cout << fmt::format("  net power                {:>10} kW -> {} kW\n", kw(first.net_power_kw),
-                             kw(last.net_power_kw));
+    std::cout << fmt::format("  net power                {:>10} kW -> {} kW\n", num_or_3g(first.net_power_kw, 100, "{:.0f}"),
+                             num_or_3g(last.net_power_kw, 100, "{:.0f}"));
     // the ode method's steps are CVODE's, the explicit methods' their own
     const std::string steps = c.forecast.method == ForecastMethod::Ode
                                   ? fmt::format("{} CVODE steps", f.stats.cvode_steps)

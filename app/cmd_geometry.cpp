@@ -74,8 +74,7 @@ int run_geometry(const GeometryOptions& o) {
     // three figures on a laboratory mill (a review, 2026-12-06: "0.0 t")
     const double ring_t = m.mass_kg_per_m * c.mill.length_m / 1000.0;
     std::cout << fmt::format("  liner mass (ring)           {:>9} kg per m of length, {} t for {} m\n",
-                             m.mass_kg_per_m >= 100 ? fmt::format("{:.0f}", m.mass_kg_per_m) : fmt::format("{:.3g}", m.mass_kg_per_m),
-                             ring_t >= 10 ? fmt::format("{:.1f}", ring_t) : fmt::format("{:.3g}", ring_t), c.mill.length_m);
+                             num_or_3g(m.mass_kg_per_m, 100, "{:.0f}"), num_or_3g(ring_t, 10, "{:.1f}"), c.mill.length_m);
     std::cout << fmt::format("  diameter inside liners      {:>9.4f} m ({:.3f} of critical at {:.2f} rpm)\n",
                              m.effective_diameter_m, c.mill.speed_rpm / nc, c.mill.speed_rpm);
     std::cout << fmt::format("  surface elements            {:>9d} (at most {} m long)\n", s.n_elements(),

@@ -39,6 +39,10 @@ CLI::Validator out_folder_check(const std::string& without);
 /// v in the format f, or "n/a" where it is not a finite number (a face angle
 /// of a plain plate, a gauge of a worn-out lifter).
 std::string num(double v, const char* f);
+/// v in the format f from `from` up, to three significant figures below (a
+/// laboratory mill's kW and tonnes, which "{:.0f}" printed as 0); "n/a" where
+/// it is not a finite number.
+std::string num_or_3g(double v, double from, const char* f);
 
 /// The summary's last line after a results file was written: "Wrote FILE and
 /// charts in DIR", or, where the charts failed (their warning above), says so.

@@ -28,6 +28,7 @@ CLI::Validator out_folder_check(const std::string& without) {
 }
 
 std::string num(double v, const char* f) { return std::isfinite(v) ? fmt::format(fmt::runtime(f), v) : "n/a"; }
+std::string num_or_3g(double v, double from, const char* f) { return num(v, std::abs(v) >= from ? f : "{:.3g}"); }
 
 void print_written(const std::string& file, const std::string& dir, bool charts) {
   std::cout << fmt::format("Wrote {}{} in {}{}\n", file, charts ? " and charts" : "", dir,
