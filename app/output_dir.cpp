@@ -1,14 +1,20 @@
 #include "app/output_dir.h"
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <mutex>
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <signal.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "geometry/errors.h"
@@ -17,9 +23,102 @@ namespace linerlife {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// The folder's path as the lock knows it: absolute, with the links of its
+// existing part resolved (two spellings of one folder take one lock).
+std::string lock_key(const std::string& dir) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(fs::absolute(dir, ec), ec);
+  if (ec || p.empty()) p = fs::absolute(dir, ec).lexically_normal();
+  std::string s = p.string();
+  while (s.size() > 1 && s.back() == '/') s.pop_back();
+  return s;
+}
+
+}  // namespace
+
+std::string output_dir_lock_path(const std::string& dir) {
+  // FNV-1a, 64 bits: the same name from every build of the program
+  std::uint64_t h = 1469598103934665603ull;
+  for (const unsigned char ch : lock_key(dir)) h = (h ^ ch) * 1099511628211ull;
+  std::error_code ec;
+  fs::path tmp = fs::temp_directory_path(ec);
+  if (ec) tmp = "/tmp";
+  return (tmp / fmt::format("linerlife-out-{:016x}.lock", h)).string();
+}
+
+namespace {
+
+// The locks this process holds. At a normal exit each lock file is removed
+// while still locked, so /tmp keeps no file per folder ever written; a run
+// killed leaves its file, which the next run into the folder locks as it is.
+struct HeldLocks {
+  std::mutex mutex;
+  std::map<std::string, std::pair<int, std::string>> by_key;  // folder -> (fd, lock file)
+  ~HeldLocks() {
+    for (const auto& [key, held] : by_key) {
+      struct stat a {}, b {};
+      if (fstat(held.first, &a) == 0 && stat(held.second.c_str(), &b) == 0 && a.st_ino == b.st_ino &&
+          a.st_dev == b.st_dev)
+        unlink(held.second.c_str());
+      close(held.first);
+    }
+  }
+};
+
+HeldLocks& held_locks() {
+  static HeldLocks h;
+  return h;
+}
+
+}  // namespace
+
+void lock_output_dir(const std::string& dir) {
+  HeldLocks& held = held_locks();
+  const std::lock_guard<std::mutex> guard(held.mutex);
+  const std::string key = lock_key(dir);
+  if (held.by_key.count(key)) return;  // an flock is per open file: this process must not lock it twice
+  const std::string path = output_dir_lock_path(dir);
+  // A run that ends removes its lock file while holding it; a run that opened
+  // the old file meanwhile finds, once locked, that the name is no longer its
+  // file, and opens the new one (the usual flock-and-unlink pattern).
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    // O_CLOEXEC: the chart scripts (popen) do not inherit the lock
+    int fd = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+    if (fd < 0) fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);  // another user's lock file: lockable read-only
+    if (fd < 0) return;                                        // no temporary folder: nothing locked
+    if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      const int err = errno;
+      char buf[32] = {};
+      const ssize_t n = pread(fd, buf, sizeof buf - 1, 0);
+      close(fd);
+      if (err != EWOULDBLOCK) return;  // a file system without flock: nothing locked
+      const long pid = n > 0 ? std::strtol(buf, nullptr, 10) : 0;
+      throw InputError(dir, fmt::format("output folder {}: another linerlife run{} is writing into it; wait for it "
+                                        "to end or give another --out folder",
+                                        dir, pid > 0 ? fmt::format(" (process {})", pid) : std::string()));
+    }
+    struct stat a {}, b {};
+    if (fstat(fd, &a) != 0 || stat(path.c_str(), &b) != 0 || a.st_ino != b.st_ino || a.st_dev != b.st_dev) {
+      close(fd);  // removed by the run that held it: lock the new one
+      continue;
+    }
+    // the holder's pid, for the message of a run refused (the lock is the
+    // flock, not the text; a read-only lock file names no process)
+    const std::string me = fmt::format("{}\n", static_cast<long>(getpid()));
+    if (ftruncate(fd, 0) == 0 && pwrite(fd, me.data(), me.size(), 0) != static_cast<ssize_t>(me.size())) {
+      // the message of a refused run then names no process
+    }
+    held.by_key.emplace(key, std::make_pair(fd, path));  // open until the process ends
+    return;
+  }
+}
+
 void check_output_dir_writable(const std::string& dir, const std::vector<std::string>& names, bool before_work) {
   std::error_code ec;
   if (dir.empty()) throw InputError("--out", "--out \"\": give a folder");
+  if (before_work) lock_output_dir(dir);
   for (const std::string& n : names) {
     const fs::path f = fs::path(dir) / n;
     if (fs::exists(fs::symlink_status(f, ec)) && !fs::is_regular_file(f, ec))

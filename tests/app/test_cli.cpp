@@ -3,11 +3,15 @@
 #include <fstream>
 #include <regex>
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 
 #include "app/h5_writer.h"
+#include "app/output_dir.h"
 #include "geometry/errors.h"
 #include "cli_runner.h"
 
@@ -366,4 +370,35 @@ TEST_CASE("a file whose folder is gone is said to be so, not blamed on a full di
     CHECK_THAT(e.what(), Catch::StartsWith("cannot write " + file));
     CHECK_THAT(e.what(), Catch::EndsWith("its folder " + dir.string() + " no longer exists (removed during the run?)"));
   }
+}
+
+TEST_CASE("a second run into an output folder another run is writing into is refused", "[app][cli][input][output]") {
+  const fs::path base = temp_dir("out_locked");
+  const fs::path out = base / "results";
+  // another run holds the folder's lock (as a running linerlife would: an flock on the lock file with its pid)
+  const std::string lock = linerlife::output_dir_lock_path(out.string());
+  CHECK(linerlife::output_dir_lock_path((base / "." / "x" / ".." / "results").string()) == lock);
+  const int fd = open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+  REQUIRE(fd >= 0);
+  REQUIRE(flock(fd, LOCK_EX | LOCK_NB) == 0);
+  const std::string pid = std::to_string(getpid());
+  REQUIRE(ftruncate(fd, 0) == 0);
+  REQUIRE(pwrite(fd, pid.data(), pid.size(), 0) == static_cast<ssize_t>(pid.size()));
+
+  const RunResult r = run_linerlife("geometry --json --out " + out.string());
+  CHECK(r.code == 2);
+  CHECK(r.out.empty());
+  CHECK_THAT(r.err, Catch::Contains("output folder " + out.string() + ": another linerlife run (process " + pid +
+                                    ") is writing into it; wait for it to end or give another --out folder"));
+  CHECK_FALSE(fs::exists(out));  // nothing made
+  // the same folder spelt another way is the same lock
+  const RunResult r2 = run_linerlife("geometry --json --out " + (base / "." / "results").string());
+  CHECK(r2.code == 2);
+
+  close(fd);  // the other run ends: the lock goes with it
+  const RunResult ok = run_linerlife("geometry --json --out " + out.string());
+  CHECK(ok.code == 0);
+  CHECK(fs::exists(out / "geometry.h5"));
+  CHECK_FALSE(fs::exists(lock));  // a run that ends well removes its lock file
+  fs::remove_all(base);
 }
