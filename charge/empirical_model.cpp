@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "charge/checked_range.h"
 #include "charge/morrell_c_model.h"
 #include "geometry/errors.h"
 #include "geometry/metrics.h"
@@ -98,6 +99,8 @@ ChargeResult EmpiricalModel::run(const ChargeInput& in) const {
     res.notes.push_back(fmt::format("the mill runs at {:.3f} of critical, beyond Morrell's phi_c = {:.3f}: the charge "
                                     "is taken as fully centrifuged (toe = shoulder = 90 deg)",
                                     r.fraction_critical, r.phi_c));
+  for (std::string& n : checked_range_notes("Morrell's model", c.filling, r.fraction_critical))
+    res.notes.push_back(std::move(n));
   res.stats.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   res.stats.simulated_s = 0;
   res.stats.realtime_ratio = std::numeric_limits<double>::quiet_NaN();  // no simulated time

@@ -20,6 +20,7 @@
 
 #include "charge/canonical_surface.h"
 #include "charge/charge_occupancy.h"
+#include "charge/checked_range.h"
 #include "charge/exact_math.h"
 #include "charge/lifter_launch.h"
 #include "charge/liner_ride_table.h"
@@ -948,6 +949,7 @@ void LayerSim::setup_layers() {
   for (int j = 0; j < nl; ++j) L_[j].omega = w[j];
   setup_flight_angles();
   note_unchecked_lifters();
+  for (std::string& n : checked_range_notes("the layer model", J_, phi_)) notes_.push_back(std::move(n));
   // Which layers may hold elements: every layer that turns forward (v > 0,
   // outside z r_i). Version 1.2 confines the charge to the annulus between
   // Morrell's inner radius r_i and the liner (thesis §4.6.2, eq. 4.14, Fig.
@@ -1014,7 +1016,13 @@ void LayerSim::note_unchecked_lifters() {
   int rows = 0;
   for (const auto& sm : seg_)
     if (sm.has_lifter && std::isfinite(sm.face_angle_leading_deg)) h_min = std::min(h_min, sm.lifter_height_m), ++rows;
-  if (rows == 0) return;
+  if (rows == 0) {
+    notes_.push_back(
+        "the liner has no lifters: the layer model lifts its charge by friction alone, and while its power there is "
+        "near the 2D DEM's its shoulder is not: on the bundled Qiu mill as a plain plate 4,672 kW and 46.8 deg where "
+        "the DEM gives 4,897 kW and 1.9 deg (docs/models/layer.md, \"Lifters the layer model is not checked on\")");
+    return;
+  }
   if (h_min < kLowLifterDiameters * d_ball_)
     notes_.push_back(fmt::format(
         "the lowest lifter is {:.0f} mm, less than half a media diameter ({:.0f} mm): the layer model holds its outer "

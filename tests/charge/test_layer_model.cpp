@@ -738,4 +738,41 @@ TEST_CASE("the layer model says when its lifters are lower than half a ball or t
   CHECK_THAT(notes_of(c), Catch::Contains("the 8 lifter rows are 30 media diameters apart"));
   c.liner.segments = 16;  // 15 diameters
   CHECK(notes_of(c).find(wide) == std::string::npos);
+  // a plain plate: no row to hold from, the shoulder far from the DEM's
+  c = qiu;
+  c.liner.design.lifter_height_m = 0;
+  const std::string flat = notes_of(c);
+  CHECK_THAT(flat, Catch::Contains("the liner has no lifters"));
+  CHECK(flat.find(low) == std::string::npos);
+  CHECK(plain.find("no lifters") == std::string::npos);
+}
+
+TEST_CASE("the charge models say when the filling or the speed is outside what they were checked on",
+          "[charge][layer][empirical]") {
+  auto notes_of = [](const std::string& model, const Config& c) {
+    const LinerSurface s = build_liner_surface(c.mill, c.liner);
+    std::string all;
+    for (const std::string& n : run_model(model, charge_input(c, s, 0.5, 0.5)).notes) all += n + "\n";
+    return all;
+  };
+  const Config qiu = mill_config("qiu2001_sag.toml");  // 0.24 filling, 0.773 of critical: inside
+  for (const std::string model : {"layer", "empirical"}) {
+    INFO(model);
+    const std::string who = model == "layer" ? "the layer model" : "Morrell's model";
+    CHECK(notes_of(model, qiu).find("outside") == std::string::npos);
+    Config c = qiu;
+    c.charge.filling = 0.05;  // the review's 193-hour forecast
+    c.charge.ball_filling = 0.04;
+    CHECK_THAT(notes_of(model, c), Catch::Contains("filling 0.05 is outside 0.18-0.45, the fillings on which " + who +
+                                                   " was checked against the 2D DEM"));
+    c.charge.filling = 0.18;  // the bound is inside
+    CHECK(notes_of(model, c).find("outside") == std::string::npos);
+    c = qiu;
+    c.mill.speed_rpm *= 0.95 / 0.773;
+    const std::string fast = notes_of(model, c);
+    CHECK_THAT(fast, Catch::Contains("of critical, outside 0.59-0.90, the speeds on which " + who + " was checked"));
+    CHECK_THAT(fast, Catch::Contains("to be checked with the DEM ([model] charge = \"dem\")"));
+    c.mill.speed_rpm = qiu.mill.speed_rpm * 0.55 / 0.773;
+    CHECK_THAT(notes_of(model, c), Catch::Contains("of critical, outside 0.59-0.90"));
+  }
 }
