@@ -219,6 +219,7 @@ int run_compare(const CompareOptions& o) {
       Case k;
       k.label = p;
       k.config = load_config_file(p);
+      note_config(k.config);
       cases.push_back(std::move(k));
     }
   }

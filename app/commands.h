@@ -62,11 +62,14 @@ CLI::Validator config_path_check();
 /// The program version ("0.1.0 (git abc1234)").
 const char* program_version();
 
-/// The configuration named on the command line, or the bundled default mill.
+/// The configuration named on the command line, or the bundled default mill;
+/// its notes (Config::notes) are printed.
 Config load_config_or_default(const std::string& path);
 
 /// Prints a summary line to stderr unless quiet.
 void note(const std::string& text);
+/// The configuration file's notes (Config::notes), one "linerlife: note:" line each.
+void note_config(const Config& c);
 
 /// A run's progress as a percentage on one line of stderr ("\r  LABEL: NN %"),
 /// drawn only when `on` and stderr is a terminal; the line is cleared when the

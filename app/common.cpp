@@ -67,7 +67,13 @@ CLI::Validator config_path_check() {
 }
 
 Config load_config_or_default(const std::string& path) {
-  return path.empty() ? load_default_config() : load_config_file(path);
+  Config c = path.empty() ? load_default_config() : load_config_file(path);
+  note_config(c);
+  return c;
+}
+
+void note_config(const Config& c) {
+  for (const std::string& n : c.notes) note("linerlife: note: " + n);
 }
 
 void note(const std::string& text) { std::cerr << text << "\n"; }

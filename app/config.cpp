@@ -249,6 +249,25 @@ void check_and_resolve(Config& c) {
         fail_at(c, std::string("liner.") + k, fmt::format("{} applies only with pattern = \"hi-lo\"", k));
   }
   if (L.measured) {
+    // The parametric design keys are allowed beside profile_csv (a measured
+    // profile added to a working file) but draw nothing: said, so that no one
+    // edits them expecting a change (a review, 2026-12-06).
+    std::vector<std::string> unused;
+    std::string first;  // the key on the earliest line, where the note points
+    for (const char* k : {"plate_thickness_m", "lifter_height_m", "lifter_top_width_m", "face_angle_leading_deg",
+                          "face_angle_trailing_deg", "corner_radius_m"}) {
+      const auto it = c.key_lines.find(std::string("liner.") + k);
+      if (it == c.key_lines.end()) continue;
+      unused.push_back(k);
+      if (first.empty() || it->second < c.key_lines.at(first)) first = it->first;
+    }
+    if (!unused.empty()) {
+      std::string list;
+      for (size_t i = 0; i < unused.size(); ++i) list += (i ? ", " : "") + unused[i];
+      c.notes.push_back(fmt::format("{}[liner] {} {} not used: profile_csv gives the liner's profile",
+                                    config_location(c, first), list,
+                                    unused.size() == 1 ? "is" : "are"));
+    }
     namespace fs = std::filesystem;
     fs::path p(c.profile_csv);
     if (p.is_relative()) p = fs::path(c.base_dir) / p;

@@ -44,6 +44,10 @@ struct Config {
   LinerMaterial material;      // density and hardness from [liner], ball density from [charge], the rest from [wear]
   ForecastSpec forecast;
 
+  // Things the file's reader should know that are no error (keys given but
+  // not used); printed once by the command that loads the file (note_config()).
+  std::vector<std::string> notes;
+
   std::map<std::string, int> key_lines;  // "section.key" -> line in the source (1-based)
   std::map<std::string, int> section_lines;
   // A configuration derived from a file by config_with() (compare --vary):

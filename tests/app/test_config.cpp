@@ -405,3 +405,29 @@ TEST_CASE("a forecast's start is checked against its criteria at set-up, and cri
   quiet = edited_text(removed("max_face_angle_leading_deg", plate), "forecast", "min_lifter_height_m", "0.0");
   CHECK(make_forecast_setup(load_config_text(quiet, "mill.toml", "."), {false, false, false}, false).warnings.empty());
 }
+
+TEST_CASE("the parametric lifter keys beside profile_csv are accepted and said to be unused", "[app][config]") {
+  // the fuzz corpus's lifter: one segment of the bundled (Qiu) mill
+  const std::string csv = std::string(LINERLIFE_SOURCE_DIR) + "/tests/fuzz/corpus/profile_csv/seed_lifter.csv";
+  CHECK(load_config_text(default_config_text(), "mill.toml", ".").notes.empty());
+  const std::string t = edited("liner", "profile_csv", "\"" + csv + "\"");
+  const Config c = load_config_text(t, "mill.toml", ".");
+  CHECK(c.liner.measured);
+  REQUIRE(c.notes.size() == 1);
+  const int first = std::min({line_of(t, "\nplate_thickness_m"), line_of(t, "\nlifter_height_m"),
+                              line_of(t, "\nlifter_top_width_m"), line_of(t, "\nface_angle_leading_deg"),
+                              line_of(t, "\nface_angle_trailing_deg")}) + 1;
+  CHECK(c.notes[0] == "mill.toml:" + std::to_string(first) +
+                          ": [liner] plate_thickness_m, lifter_height_m, lifter_top_width_m, face_angle_leading_deg, "
+                          "face_angle_trailing_deg are not used: profile_csv gives the liner's profile");
+  // without them, nothing to say
+  std::string bare = t;
+  for (const char* k : {"plate_thickness_m", "lifter_height_m", "lifter_top_width_m", "face_angle_leading_deg",
+                        "face_angle_trailing_deg"})
+    bare = removed(k, bare);
+  CHECK(load_config_text(bare, "mill.toml", ".").notes.empty());
+  // one left: "is"
+  const Config one = load_config_text(edited_text(bare, "liner", "corner_radius_m", "0.01"), "mill.toml", ".");
+  REQUIRE(one.notes.size() == 1);
+  CHECK_THAT(one.notes[0], Catch::EndsWith("[liner] corner_radius_m is not used: profile_csv gives the liner's profile"));
+}
