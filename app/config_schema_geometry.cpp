@@ -97,7 +97,8 @@ void add_liner_keys(Schema& s) {
                                   "optional"));
   s.keys.push_back(real_key("liner", "element_size_m", "m",
                             "Longest surface element (default from the convergence study in docs/geometry.md; at "
-                            "least 1 mm, a quarter of its finest run)",
+                            "least 1 mm, below the finest run of both element-size studies: 2.5 mm there, 1.5 mm in "
+                            "docs/validation/forecast.md)",
                             kMinElementSizeM, 1.0, false, false, std::nullopt,
                             [](Config& c, double v) { c.liner.element_size_m = v; },
                             [](const Config& c) { return c.liner.element_size_m; }, true));

@@ -12,10 +12,10 @@ namespace linerlife {
 /// forecast's remesh cannot wear (a plain plate of one row fails there).
 constexpr int kMinSegments = 2;
 
-/// [m] The finest surface element: a quarter of the finest run of the
-/// element-size study (docs/geometry.md), 2.5 mm, which differs from 5 mm by
-/// under 0.2 %. A 15 m mill has 47,000 nodes at 1 mm; 1e-9 m asked for
-/// 3e10 and ended in bad_alloc.
+/// [m] The finest surface element: below the finest run of both element-size
+/// studies (docs/geometry.md: 2.5 mm, which differs from 5 mm by under 0.2 %;
+/// docs/validation/forecast.md: 1.5 mm). A 15 m mill has 47,000 nodes at
+/// 1 mm; 1e-9 m asked for 3e10 and ended in bad_alloc.
 constexpr double kMinElementSizeM = 0.001;
 
 /// Builds the whole ring of liners for `mill` from `design`, with surface
