@@ -140,7 +140,13 @@ InputError located(const Config& c, const InputError& e) {
   std::string quoted;
   if (!named) {
     const std::optional<ConfigValue> v = spec->get ? spec->get(c) : std::nullopt;
-    if (v && v->kind == ConfigValue::Kind::Real) quoted = fmt::format("{} = {}: ", name, v->real);
+    if (v && v->kind == ConfigValue::Kind::Real) {
+      // as the file wrote it (15.0, not 15) while it still holds that value
+      const auto text = c.key_text.find(key);
+      double written = 0;
+      const bool same = text != c.key_text.end() && parse_decimal(text->second, written) && written == v->real;
+      quoted = fmt::format("{} = {}: ", name, same ? text->second : fmt::format("{}", v->real));
+    }
   }
   return InputError(key, config_location(c, key) + quoted + msg);
 }

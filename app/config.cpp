@@ -478,6 +478,7 @@ Config load_config_text(const std::string& text, const std::string& source, cons
                                              printable(v.text), spec->allowed()));
       }
       c.key_lines[full] = line;
+      c.key_text[full] = node_text(knode);
       spec->set(c, v);
     }
   }
