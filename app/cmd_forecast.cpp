@@ -152,7 +152,7 @@ int run_forecast_command(const ForecastOptions& o) {
       dir->commit(tmp, "forecast.h5");
       // no charts for a partial file: an earlier run's would be read as its
       // own (a review, 2026-12-06); `linerlife plot` draws them on request
-      for (const char* png : {"forecast_profiles.png", "forecast_lifter.png", "forecast_charge.png"}) {
+      for (const char* png : kForecastCharts) {
         std::error_code ec;
         if (std::filesystem::is_regular_file(dir->path(png), ec)) std::filesystem::remove(dir->path(png), ec);
       }

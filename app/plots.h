@@ -21,6 +21,14 @@ bool draw_charts(const std::string& kind, const std::string& results_h5, const s
 int run_plot_script(const std::string& kind, const std::string& results_h5, const std::string& out_dir,
                     std::string* report = nullptr);
 
+/// The charts plot_forecast.py draws (its CHARTS). A failed forecast removes
+/// them beside its partial forecast.h5 without running Python (they would be
+/// read as its own), so the names are written here too; a test checks the two
+/// lists agree ("the forecast charts a partial run removes are the ones
+/// plot_forecast.py draws").
+inline constexpr const char* kForecastCharts[] = {"forecast_profiles.png", "forecast_lifter.png",
+                                                  "forecast_charge.png"};
+
 /// The kinds of results file that have charts (a plot_KIND.py next to the
 /// plotting script), sorted.
 std::vector<std::string> chart_kinds();

@@ -7,7 +7,8 @@ import numpy as np
 from plot_common import lifter_frame, save
 
 # every chart this kind of file may draw (a chart of an earlier run left in the folder under one of these
-# names is removed: plot_common.commit_charts())
+# names is removed: plot_common.commit_charts()); app/plots.h's kForecastCharts repeats them for a failed
+# run, which removes them without Python (a test checks the two agree)
 CHARTS = ("forecast_profiles.png", "forecast_lifter.png", "forecast_charge.png")
 
 

@@ -12,6 +12,7 @@
 
 #include "app/h5_writer.h"
 #include "app/output_dir.h"
+#include "app/plots.h"
 #include "geometry/errors.h"
 #include "cli_runner.h"
 
@@ -401,4 +402,18 @@ TEST_CASE("a second run into an output folder another run is writing into is ref
   CHECK(fs::exists(out / "geometry.h5"));
   CHECK_FALSE(fs::exists(lock));  // a run that ends well removes its lock file
   fs::remove_all(base);
+}
+
+TEST_CASE("the forecast charts a partial run removes are the ones plot_forecast.py draws", "[app][output]") {
+  const std::string py = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/app/plots/plot_forecast.py");
+  std::smatch m;
+  REQUIRE(std::regex_search(py, m, std::regex("\nCHARTS = \\(([^)]*)\\)")));
+  std::vector<std::string> drawn;
+  const std::string list = m[1];
+  const std::regex name("\"([^\"]+)\"");
+  for (auto it = std::sregex_iterator(list.begin(), list.end(), name); it != std::sregex_iterator(); ++it)
+    drawn.push_back((*it)[1]);
+  const std::vector<std::string> removed(std::begin(linerlife::kForecastCharts), std::end(linerlife::kForecastCharts));
+  CHECK(drawn == removed);
+  CHECK(drawn.size() == 3);
 }
