@@ -42,9 +42,10 @@ std::string output_dir_lock_path(const std::string& dir) {
   // FNV-1a, 64 bits: the same name from every build of the program
   std::uint64_t h = 1469598103934665603ull;
   for (const unsigned char ch : lock_key(dir)) h = (h ^ ch) * 1099511628211ull;
+  // /tmp, not $TMPDIR: two runs with different TMPDIR must still meet at one lock
   std::error_code ec;
-  fs::path tmp = fs::temp_directory_path(ec);
-  if (ec) tmp = "/tmp";
+  fs::path tmp = "/tmp";
+  if (!fs::is_directory(tmp, ec)) tmp = fs::temp_directory_path(ec);
   return (tmp / fmt::format("linerlife-out-{:016x}.lock", h)).string();
 }
 

@@ -56,10 +56,11 @@ void check_output_dir_writable(const std::string& dir, const std::vector<std::st
 /// second linerlife run into the same folder while this one runs is refused
 /// (a review, 2026-12-06: two forecasts into one folder mixed one run's
 /// results file with the other's charts). The lock is an flock() on a file in
-/// the temporary-files folder named by a hash of the folder's absolute path,
+/// /tmp (whatever TMPDIR says) named by a hash of the folder's absolute path,
 /// so it needs no folder yet and is released by the kernel when the process
-/// ends, however it ends (a normal exit also removes the file). A folder locked by another process: InputError
-/// (exit 2) naming it and the holder's pid. Best effort: where the lock file
+/// ends, however it ends (a normal exit also removes the file). A folder
+/// locked by another process: InputError (exit 2) naming it and the holder's
+/// pid. Best effort: where the lock file
 /// cannot be made (no temporary folder), nothing is locked. Called by
 /// check_output_dir_writable() before the work; a second call for the same
 /// folder returns at once.
