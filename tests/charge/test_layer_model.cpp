@@ -774,5 +774,13 @@ TEST_CASE("the charge models say when the filling or the speed is outside what t
     CHECK_THAT(fast, Catch::Contains("to be checked with the DEM ([model] charge = \"dem\")"));
     c.mill.speed_rpm = qiu.mill.speed_rpm * 0.55 / 0.773;
     CHECK_THAT(notes_of(model, c), Catch::Contains("of critical, outside 0.59-0.90"));
+    // the bounds are inside, for Morrell's model too, whose critical speed is 42.3 / sqrt(D)
+    const LinerSurface s = build_liner_surface(qiu.mill, qiu.liner);
+    const double phi_qiu = run_model("layer", charge_input(qiu, s, 0.1, 0.1)).indicators.fraction_critical;
+    for (const double phi : {0.59, 0.90}) {
+      Config b = qiu;  // speed_fraction_critical = phi, as the configuration resolves it
+      b.mill.speed_rpm = qiu.mill.speed_rpm * phi / phi_qiu;
+      CHECK(notes_of(model, b).find("of critical, outside") == std::string::npos);
+    }
   }
 }
