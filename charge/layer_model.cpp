@@ -1013,16 +1013,18 @@ void LayerSim::note_unchecked_lifters() {
   // is and however far apart the rows are, where the DEM's charge slides over
   // a low lifter and slips between distant rows. Said where it acts.
   double h_min = kInf;
-  int rows = 0;
-  for (const auto& sm : seg_)
+  int rows = 0, lifters = 0;
+  for (const auto& sm : seg_) {
+    lifters += sm.has_lifter ? 1 : 0;
     if (sm.has_lifter && std::isfinite(sm.face_angle_leading_deg)) h_min = std::min(h_min, sm.lifter_height_m), ++rows;
-  if (rows == 0) {
+  }
+  if (lifters == 0)
     notes_.push_back(
         "the liner has no lifters: the layer model lifts its charge by friction alone, and while its power there is "
         "near the 2D DEM's its shoulder is not: on the bundled Qiu mill as a plain plate 4,672 kW and 46.8 deg where "
-        "the DEM gives 4,897 kW and 1.9 deg (docs/models/layer.md, \"Lifters the layer model is not checked on\")");
-    return;
-  }
+        "the DEM gives 4,897 kW and 1.9 deg (docs/models/layer.md, \"Lifters the layer model is not checked on\"); "
+        "read the shoulder and the impacts from the DEM ([model] charge = \"dem\")");
+  if (rows == 0) return;
   if (h_min < kLowLifterDiameters * d_ball_)
     notes_.push_back(fmt::format(
         "the lowest lifter is {:.0f} mm, less than half a media diameter ({:.0f} mm): the layer model holds its outer "
