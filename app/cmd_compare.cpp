@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iostream>
 #include <mutex>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -211,7 +212,14 @@ int run_compare(const CompareOptions& o) {
     if (o.configs.size() > 1)
       throw InputError("--vary", "--vary takes one configuration (or none: the bundled mill); got " +
                                      std::to_string(o.configs.size()));
-    cases = vary_cases(load_config_or_default(o.configs.empty() ? "" : o.configs.front()), o.vary);
+    const Config base = load_config_or_default(o.configs.empty() ? "" : o.configs.front());
+    cases = vary_cases(base, o.vary);
+    // a case's own notes (a varied lifter key beside profile_csv is not used:
+    // the cases would be the same), each once, after the file's
+    std::set<std::string> said(base.notes.begin(), base.notes.end());
+    for (const Case& k : cases)
+      for (const std::string& n : k.config.notes)
+        if (said.insert(n).second) note("linerlife: note: " + k.label + ": " + n);
   } else {
     if (o.configs.size() < 2)
       throw InputError("compare", "compare needs two or more configurations, or one with --vary KEY=v1,v2,...");

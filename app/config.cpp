@@ -258,6 +258,9 @@ void check_and_resolve(Config& c) {
                           "face_angle_trailing_deg", "corner_radius_m"}) {
       const auto it = c.key_lines.find(std::string("liner.") + k);
       if (it == c.key_lines.end()) continue;
+      // corner_radius_m has a default, which a re-printed configuration
+      // (compare --vary) writes out: only a fillet asked for is worth a note
+      if (std::string(k) == "corner_radius_m" && c.liner.design.corner_radius_m == 0) continue;
       unused.push_back(k);
       if (first.empty() || it->second < c.key_lines.at(first)) first = it->first;
     }

@@ -835,3 +835,26 @@ TEST_CASE("an ode forecast whose liner wears less than five refresh_tol_m says s
   spec.refresh_always = true;
   CHECK(few_drives_caveat(spec, f).empty());
 }
+
+TEST_CASE("compare says when the key it varies is not used beside profile_csv", "[app][cli]") {
+  const fs::path dir = temp_dir("vary_unused");
+  std::string t = fast_qiu("max_operating_hours = 200\n");
+  t = std::regex_replace(t, std::regex("\\[liner\\]\n"),
+                         "[liner]\nprofile_csv = \"" + std::string(LINERLIFE_SOURCE_DIR) +
+                             "/tests/fuzz/corpus/profile_csv/seed_lifter.csv\"\n");
+  t = std::regex_replace(t, std::regex("\nlifter_height_m = [^\n]*\n"), "\n");
+  write_file(dir / "measured.toml", t);
+  const RunResult r = run_linerlife("compare " + (dir / "measured.toml").string() +
+                                    " --vary liner.lifter_height_m=0.2,0.22 --json");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  // the file's note once, then each case's, whose varied key is among the unused
+  const std::string file_note = "[liner] plate_thickness_m, lifter_top_width_m, face_angle_leading_deg, "
+                                "face_angle_trailing_deg are not used: profile_csv gives the liner's profile";
+  CHECK(r.err.find(file_note) != std::string::npos);
+  CHECK(r.err.find(file_note) == r.err.rfind(file_note));
+  for (const std::string v : {"0.2", "0.22"})
+    CHECK_THAT(r.err, Catch::Contains("linerlife: note: liner.lifter_height_m=" + v + ": "));
+  CHECK_THAT(r.err, Catch::Contains("[liner] lifter_height_m is not used: profile_csv gives the liner's profile"));
+  fs::remove_all(dir);
+}
