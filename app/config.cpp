@@ -254,13 +254,13 @@ void check_and_resolve(Config& c) {
     // edits them expecting a change (a review, 2026-12-06).
     std::vector<std::string> unused;
     std::string first;  // the key on the earliest line, where the note points
-    for (const char* k : {"plate_thickness_m", "lifter_height_m", "lifter_top_width_m", "face_angle_leading_deg",
-                          "face_angle_trailing_deg", "corner_radius_m"}) {
-      const auto it = c.key_lines.find(std::string("liner.") + k);
+    // corner_radius_m has a default, which a re-printed configuration
+    // (compare --vary) writes out: only a fillet asked for is worth a note
+    std::vector<std::string> keys(std::begin(parametric), std::end(parametric));
+    if (c.liner.design.corner_radius_m != 0) keys.push_back("corner_radius_m");
+    for (const std::string& k : keys) {
+      const auto it = c.key_lines.find("liner." + k);
       if (it == c.key_lines.end()) continue;
-      // corner_radius_m has a default, which a re-printed configuration
-      // (compare --vary) writes out: only a fillet asked for is worth a note
-      if (std::string(k) == "corner_radius_m" && c.liner.design.corner_radius_m == 0) continue;
       unused.push_back(k);
       if (first.empty() || it->second < c.key_lines.at(first)) first = it->first;
     }

@@ -35,16 +35,17 @@ inline std::vector<std::string> checked_range_notes(const std::string& model, do
   // from critical_speed_rpm(), so speed_fraction_critical = 0.59 reached it as
   // 0.58997 (a review, 2026-12-06). The notes print three decimals.
   constexpr double kMargin = 5e-4;
+  auto outside = [&](const std::string& what, double lo, double hi, const std::string& noun) {
+    out.push_back(fmt::format("{} outside {:.2f}-{:.2f}, the {} on which {} was checked against the 2D DEM "
+                              "(docs/validation/charge.md): its results here are an extrapolation, to be checked "
+                              "with the DEM ([model] charge = \"dem\")",
+                              what, lo, hi, noun, model));
+  };
   if (filling < kCheckedFillingMin - kMargin || filling > kCheckedFillingMax + kMargin)
-    out.push_back(fmt::format(
-        "filling {:.3g} is outside {:.2f}-{:.2f}, the fillings on which {} was checked against the 2D DEM "
-        "(docs/validation/charge.md): its results here are an extrapolation, to be checked with the DEM ([model] charge = \"dem\")",
-        filling, kCheckedFillingMin, kCheckedFillingMax, model));
+    outside(fmt::format("filling {:.3g} is", filling), kCheckedFillingMin, kCheckedFillingMax, "fillings");
   if (fraction_critical < kCheckedSpeedMin - kMargin || fraction_critical > kCheckedSpeedMax + kMargin)
-    out.push_back(fmt::format(
-        "the mill runs at {:.3f} of critical, outside {:.2f}-{:.2f}, the speeds on which {} was checked against the 2D DEM "
-        "(docs/validation/charge.md): its results here are an extrapolation, to be checked with the DEM ([model] charge = \"dem\")",
-        fraction_critical, kCheckedSpeedMin, kCheckedSpeedMax, model));
+    outside(fmt::format("the mill runs at {:.3f} of critical,", fraction_critical), kCheckedSpeedMin, kCheckedSpeedMax,
+            "speeds");
   return out;
 }
 

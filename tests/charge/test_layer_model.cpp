@@ -715,14 +715,21 @@ TEST_CASE("the direct-impact fraction is the share of the averaged landings, wha
 // A review (2026-12-06) found two liners on which the layer model is far from
 // the 2D DEM without saying so (docs/models/layer.md, "Lifters the layer model
 // is not checked on"): lifters lower than half a ball, and rows far apart.
+namespace {
+
+/// The notes of half a revolution of `model` on configuration c, one per line.
+std::string model_notes(const std::string& model, const Config& c) {
+  const LinerSurface s = build_liner_surface(c.mill, c.liner);
+  std::string all;
+  for (const std::string& n : run_model(model, charge_input(c, s, 0.5, 0.5)).notes) all += n + "\n";
+  return all;
+}
+
+}  // namespace
+
 TEST_CASE("the layer model says when its lifters are lower than half a ball or their rows far apart",
           "[charge][layer]") {
-  auto notes_of = [](Config c) {
-    const LinerSurface s = build_liner_surface(c.mill, c.liner);
-    std::string all;
-    for (const std::string& n : run_model("layer", charge_input(c, s, 0.5, 0.5)).notes) all += n + "\n";
-    return all;
-  };
+  auto notes_of = [](const Config& c) { return model_notes("layer", c); };
   const Config qiu = mill_config("qiu2001_sag.toml");
   const std::string low = "less than half a media diameter", wide = "media diameters apart";
   const std::string plain = notes_of(qiu);
@@ -749,12 +756,7 @@ TEST_CASE("the layer model says when its lifters are lower than half a ball or t
 
 TEST_CASE("the charge models say when the filling or the speed is outside what they were checked on",
           "[charge][layer][empirical]") {
-  auto notes_of = [](const std::string& model, const Config& c) {
-    const LinerSurface s = build_liner_surface(c.mill, c.liner);
-    std::string all;
-    for (const std::string& n : run_model(model, charge_input(c, s, 0.5, 0.5)).notes) all += n + "\n";
-    return all;
-  };
+  const auto& notes_of = model_notes;
   const Config qiu = mill_config("qiu2001_sag.toml");  // 0.24 filling, 0.773 of critical: inside
   for (const std::string model : {"layer", "empirical"}) {
     INFO(model);

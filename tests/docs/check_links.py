@@ -7,6 +7,7 @@ heading numbered -1, -2, ...).
 Links are found in the text outside fenced code blocks (``` or ~~~) and inline code spans, and
 may wrap over lines: [text](target) and [text](target "title"). Reference-style links, HTML
 anchors and setext headings are not used in these docs and not checked."""
+import functools
 import pathlib
 import re
 import sys
@@ -30,6 +31,7 @@ def prose_lines(md: pathlib.Path):
     return out
 
 
+@functools.lru_cache(maxsize=None)  # one read per linked file, not per link
 def anchors(md: pathlib.Path):
     out, seen = set(), {}
     for line in prose_lines(md):
