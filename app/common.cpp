@@ -179,9 +179,9 @@ std::string worn_power_caveat(const std::string& charge_model, const std::vector
     if (std::isfinite(d) && std::abs(d) > std::abs(dev)) dev = d, worst = i;
   }
   if (std::abs(dev) <= kWornPowerCaveatFraction) return "";
-  // The DEM figures: docs/models/layer-worn.md, "The DEM on the same worn
-  // profiles" (bench_layer_worn --model dem on the bundled forecast's
-  // profiles at 0, 3000, 6000 and 9173 h, 20 revolutions each).
+  // The figures of kWornPowerCaveatWhy: docs/models/layer-worn.md, "The
+  // bed's support" (bench_layer_worn, and --model dem, on the bundled
+  // forecast's profiles at 0, 3000, 6000 and 7355 h, 20 revolutions each).
   return fmt::format("the layer model's net power moves by {:+.0f} % over this life ({:.0f} kW new, {:.0f} kW at {:.0f} h); {}",
                      100.0 * dev, p0, net_power_kw[worst], hours[worst], kWornPowerCaveatWhy);
 }
@@ -198,7 +198,7 @@ std::vector<std::string> case_note_lines(const std::vector<std::string>& labels,
         if (explained_in.empty()) explained_in = labels[i];
         else
           x.replace(why, std::string::npos,
-                    fmt::format("its power on worn liners is not validated (the note on {})", explained_in));
+                    fmt::format("its power on worn liners is not validated beyond that (the note on {})", explained_in));
       }
       lines.push_back(fmt::format("linerlife: note: {}: {}", labels[i], x));
     }
@@ -326,11 +326,12 @@ std::string speed_trend_caveat(const std::vector<const Config*>& cases) {
     hi = c == cases.front() ? rpm : std::max(hi, rpm);
   }
   if (!v12 || cases.size() < 2 || !(hi > 1.01 * lo)) return "";
-  // bench/operating_trend.py on the Qiu mill, 66 to 90 % of critical
+  // bench/operating_trend.py on the Qiu mill, 66 to 90 % of critical (the
+  // layer column since 2026-12-06: `linerlife charge` at each speed)
   return "the cases differ in mill speed, and the layer model (version 1.2) draws less power as the speed rises: on the "
-         "bundled Qiu mill -27 % from 66 to 90 % of critical, where the 2D DEM draws +41 % and Morrell's C-model +42 % "
-         "(within 10 % of the DEM only from about 76 to 82 %) (docs/validation/charge.md, \"Operating trends\"). Read "
-         "the speed's effect on power from [model] charge = \"empirical\" or \"dem\"";
+         "bundled Qiu mill -13 % from 66 to 90 % of critical, where the 2D DEM draws +41 % and Morrell's C-model +42 % "
+         "(version 1.2 within 10 % of the DEM only from about 74 to 82 %) (docs/validation/charge.md, \"Operating "
+         "trends\"). Read the speed's effect on power from [model] charge = \"empirical\" or \"dem\"";
 }
 
 Json caveats_json(const std::vector<std::string>& caveats) {

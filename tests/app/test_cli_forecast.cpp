@@ -201,7 +201,7 @@ TEST_CASE("compare explains the worn-power caveat once and gives each case its f
   CHECK(l[1] == "linerlife: note: x=2: step");
   CHECK(l[2].find("x=3: the layer model's net power moves by -20 % over this life") != std::string::npos);
   CHECK(l[2].find("(docs/models/layer-worn.md)") == std::string::npos);
-  CHECK_THAT(l[2], Catch::EndsWith("its power on worn liners is not validated (the note on x=1)"));
+  CHECK_THAT(l[2], Catch::EndsWith("its power on worn liners is not validated beyond that (the note on x=1)"));
   CHECK(case_note_lines({"x=1"}, {{""}}).empty());
 }
 
@@ -311,7 +311,11 @@ TEST_CASE("a forecast from a dense measured profile says so, in the JSON, on std
 
 TEST_CASE("forecast --out writes the results file and its charts, and plot redraws them", "[app][cli][forecast][plot]") {
   const fs::path dir = temp_dir("fc_out");
-  write_file(dir / "m.toml", fast_qiu());
+  // a 0.23 m lifter worn to 0.20 m: 30 mm of wear, three refresh tolerances,
+  // so the run prints a caveat (few_drives_caveat()) for the file to keep
+  const std::string text = fast_qiu();
+  REQUIRE(text.find("\nlifter_height_m = 0.25\n") != std::string::npos);
+  write_file(dir / "m.toml", std::regex_replace(text, std::regex("\nlifter_height_m = 0.25\n"), "\nlifter_height_m = 0.23\n"));
   const RunResult r = run_linerlife("forecast " + (dir / "m.toml").string() + " --quiet --out " + (dir / "run").string());
   INFO(r.err);
   REQUIRE(r.code == 0);
@@ -329,9 +333,9 @@ TEST_CASE("forecast --out writes the results file and its charts, and plot redra
   for (size_t i = 1; i < mass.size(); ++i) CHECK(mass[i] <= mass[i - 1] + 1e-9);  // wear only removes steel
   const auto ph = h5.doubles("/forecast/profiles/hours");
   CHECK(ph.size() >= 2);
-  // this shortened mill's layer-model power departs by +19 %: the file keeps the caveat the run printed
+  // the file keeps the caveat the run printed
   const std::string cav = h5.attr_string("/forecast", "caveat");
-  CHECK_THAT(cav, Catch::Contains("docs/models/layer-worn.md"));
+  CHECK_THAT(cav, Catch::Contains("times refresh_tol_m"));
   CHECK(r.err.find(cav) != std::string::npos);
 
   if (!python_charts_available()) {
@@ -480,14 +484,16 @@ TEST_CASE("compare --vary forecasts one case per value and ranks them in a table
     CHECK(c["mean_net_power_kw"].num() > 0);
     CHECK(is_iso_date(c["relining_date"].str()));
     CHECK(c["end_date"].str() == c["relining_date"].str());  // reached: the run ended on the relining date
-    // a caveat on the layer model's power history is printed with its case:
-    // its figures each time, its explanation once (case_note_lines())
+    // a case's caveats are printed with its label (a worn-power caveat with
+    // its figures each time and its explanation once: case_note_lines(), and
+    // its own test)
     for (const auto& cv : c["caveats"].items()) {
       const std::string text = cv["text"].str();
       CHECK(r.err.find(c["case"].str() + ": " + text.substr(0, text.find(kWornPowerCaveatWhy))) != std::string::npos);
     }
   }
-  CHECK(r.err.find(kWornPowerCaveatWhy) != std::string::npos);
+  // the 0.23 m lifter wears 30 mm, three refresh tolerances: its case has a caveat
+  REQUIRE(cases[0]["caveats"].items().size() >= 1);
   CHECK(r.err.find(kWornPowerCaveatWhy) == r.err.rfind(kWornPowerCaveatWhy));
   // a value the schema refuses names the case and the key
   const RunResult bad = run_linerlife("compare " + (dir / "m.toml").string() + " --vary liner.lifter_height_m=0.25,-1");
@@ -607,9 +613,10 @@ TEST_CASE("compare of mill speeds by the layer model V-1.2 says its power goes t
   CHECK(speed_trend_caveat({&dem, &dem_faster}).empty());
   CHECK(speed_trend_caveat({&base}).empty());
   // what the note says, on the bundled mill: V-1.2's power falls from 70 to
-  // 86 % of critical (7,266 -> 5,414 kW) where Morrell's rises (5,504 ->
-  // 6,975 kW; the DEM 5,316 -> 6,666, bench/operating_trend.py): when a
-  // repair turns V-1.2's trend, this fails and the note is to be revised
+  // 86 % of critical (6,151 -> 5,414 kW; 7,266 -> 5,414 before the support
+  // rule of 2026-12-06) where Morrell's rises (5,504 -> 6,975 kW; the DEM
+  // 5,316 -> 6,666, bench/operating_trend.py): when a repair turns V-1.2's
+  // trend, this fails and the note is to be revised
   const fs::path dir = temp_dir("speed_trend");
   auto power = [&](const std::string& phi, const std::string& model) {
     std::string t = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/qiu2001_sag.toml");
@@ -621,7 +628,7 @@ TEST_CASE("compare of mill speeds by the layer model V-1.2 says its power goes t
     REQUIRE(r.code == 0);
     return parse_json(r.out)["net_power_kw"].num();
   };
-  CHECK(power("0.86", "layer") < 0.85 * power("0.70", "layer"));
+  CHECK(power("0.86", "layer") < 0.95 * power("0.70", "layer"));
   CHECK(power("0.86", "empirical") > 1.2 * power("0.70", "empirical"));
   fs::remove_all(dir);
 }
@@ -654,16 +661,16 @@ TEST_CASE("compare with two --vary forecasts every combination of their values",
   CHECK(cases[2]["operating_hours"].num() > cases[0]["operating_hours"].num() * 1.1);
   CHECK(cases[3]["operating_hours"].num() > cases[1]["operating_hours"].num() * 1.1);
   const RunResult one = run_linerlife("compare " + (dir / "m.toml").string() +
-                                      " --vary liner.face_angle_leading_deg=15,22 --json --jobs 1 --vary liner.lifter_height_m=0.25"
+                                      " --vary liner.face_angle_leading_deg=15,22 --json --jobs 1 --vary liner.lifter_height_m=0.23"
                                       " --out " + (dir / "out").string());
   INFO(one.err);
   REQUIRE(one.code == 0);
   const JsonValue j1 = parse_json(one.out);
   const auto& c1 = j1["cases"].items();
   REQUIRE(c1.size() == 2);
-  CHECK(c1[1]["case"].str() == "liner.face_angle_leading_deg=22 liner.lifter_height_m=0.25");
-  CHECK(c1[1]["operating_hours"].num() == cases[3]["operating_hours"].num());
-  CHECK(c1[1]["mean_net_power_kw"].num() == cases[3]["mean_net_power_kw"].num());
+  CHECK(c1[1]["case"].str() == "liner.face_angle_leading_deg=22 liner.lifter_height_m=0.23");
+  CHECK(c1[1]["operating_hours"].num() == cases[1]["operating_hours"].num());
+  CHECK(c1[1]["mean_net_power_kw"].num() == cases[1]["mean_net_power_kw"].num());
   REQUIRE(fs::exists(dir / "out" / "compare.h5"));
   if (python_charts_available()) CHECK(fs::exists(dir / "out" / "compare.png"));
   // the file keeps the caveats as forecast.h5 does: the ranking's on /cases,
@@ -673,15 +680,15 @@ TEST_CASE("compare with two --vary forecasts every combination of their values",
     CHECK(h5.attr_string("/cases", "caveat") == j1["caveats"].items()[0]["text"].str());
     // the varied keys in --vary order and each case's values (the chart's ticks), not parsed from the labels
     CHECK(h5.attr_string("/cases", "varied_keys") == "liner.face_angle_leading_deg\nliner.lifter_height_m");
-    CHECK(h5.attr_string("/cases/0", "varied_values") == "15\n0.25");
-    CHECK(h5.attr_string("/cases/1", "varied_values") == "22\n0.25");
+    CHECK(h5.attr_string("/cases/0", "varied_values") == "15\n0.23");
+    CHECK(h5.attr_string("/cases/1", "varied_values") == "22\n0.23");
     size_t with = 0;
     for (size_t i = 0; i < 2; ++i)
       for (const auto& cv : c1[i]["caveats"].items()) {
         ++with;
         CHECK(h5.attr_string("/cases/" + std::to_string(i) + "/forecast", "caveat") == cv["text"].str());
       }
-    CHECK(with >= 1);  // the 22 deg faces' power rises by more than 15 % (+26 % at 0.25 m)
+    CHECK(with >= 1);  // the 0.23 m lifters wear 30 mm, three refresh tolerances (few_drives_caveat())
   }
   fs::remove_all(dir);
 }

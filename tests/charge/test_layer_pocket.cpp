@@ -89,9 +89,11 @@ TEST_CASE("pocket loads put the charge's tangential weight on the lifter faces, 
   CHECK(b.face_n - a.face_n > 0.9 * (b.all_n - a.all_n));
   // which face: the bed lies on the rising side, where the leading face of
   // the lifter behind pushes the pocket; the trailing faces hold the pockets
-  // of the falling side, the toe's few (2.8 times as much to the leading
-  // faces when written; a push sent the wrong way round gives the reverse)
-  CHECK(b.lead_n - a.lead_n > 1.5 * (b.trail_n - a.trail_n));
+  // of the falling side, the toe's few (1.45 times as much to the leading
+  // faces since the bed's support rule of 2026-12-06 brought the bed down
+  // the rising side to the DEM's, 2.8 times before; a push sent the wrong way
+  // round gives the reverse)
+  CHECK(b.lead_n - a.lead_n > 1.2 * (b.trail_n - a.trail_n));
   CHECK(b.trail_n > a.trail_n);
 }
 
