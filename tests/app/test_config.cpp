@@ -290,6 +290,14 @@ TEST_CASE("forecast dates, availability and shutdowns load and are checked", "[a
   refused(edited("forecast", "shutdowns", "[{ start = 2027-06-01, days = -2 }]"), {"shutdowns", "0 < days"});
   refused(edited("forecast", "method", "\"rk4\""), {"method = \"rk4\"", "\"ode\", \"amplify\", \"euler\""});
   refused(edited("forecast", "rtol", "0.0"), {"rtol = 0.0:", "out of range"});
+  // floors that keep a forecast finite and inside what CVODE can do (a
+  // review, 2026-12-06: 1e-20 failed in CVODE naming no key; refresh 1e-9 and
+  // 1e-9 revolutions a step ran without end)
+  refused(edited("forecast", "rtol", "1e-20"), {"rtol = 1e-20:", "1e-10 <= value <= 0.1"});
+  refused(edited("forecast", "atol", "1e-20"), {"atol = 1e-20:", "1e-12 <= value <= 0.001"});
+  refused(edited("forecast", "refresh_tol_m", "1e-9"), {"refresh_tol_m = 1e-09:", "1e-05 <= value <= 0.05"});
+  refused(edited("forecast", "amplify_revolutions", "1e-9"), {"amplify_revolutions = 1e-09:", "0.1 <= value <= 100"});
+  CHECK(load_config_text(edited("forecast", "rtol", "1e-10"), "mill.toml", ".").forecast.rtol == 1e-10);  // the floor itself
 }
 
 TEST_CASE("a varied string key takes its value with or without quotes", "[app][config][input]") {
