@@ -86,6 +86,34 @@ std::array<double, 3> scales(const std::vector<Param>& ps, const std::vector<dou
   return s;
 }
 
+// A factor beyond its key's range is the fit's doing, not the file's (a
+// review, 2026-12-06: scans labelled 0.01 h instead of 2,000 h ended with
+// "FILE:185: wear.calibration_centrifugal = 162754.79...: out of range", a
+// value the file never held): say so, naming the scans. The fit's trial
+// factors reach such values only where the profiles ask for them.
+void check_fitted_factors(const Config& c, const std::array<double, 3>& s, const std::string& measured,
+                          const MeasuredHistory& h) {
+  const std::array<std::pair<const char*, double>, 3> fitted{{
+      {"calibration_centrifugal", c.wear.calibration_centrifugal * s[0]},
+      {"calibration_gravitational", c.wear.calibration_gravitational * s[1]},
+      {"calibration_impact", c.wear.calibration_impact * s[2]},
+  }};
+  for (const auto& [key, v] : fitted) {
+    const KeySpec* spec = config_schema().find("wear", key);
+    if (!spec) continue;
+    const bool low = spec->lo_open ? !(v > spec->lo) : !(v >= spec->lo);
+    const bool high = spec->hi_open ? !(v < spec->hi) : !(v <= spec->hi);
+    if (low || high)
+      throw InputError(measured, fmt::format(
+          "{}: the fit to these profiles asks for [wear] {} = {:.4g}, outside what the key allows ({}): the "
+          "profiles wear the liner {} than the model does at any allowed calibration. Check the hours of the "
+          "profiles ({} to {} h) and that they are of this mill",
+          measured, key, v, spec->allowed(), high ? "far faster" : "far slower", h.snapshots.front().hours,
+          h.snapshots.back().hours));
+  }
+}
+
+
 int run_calibrate(const CalibrateOptions& o) {
   const Config c = load_config_or_default(o.config);
   if (o.measured.empty()) throw InputError("--measured", "calibrate needs --measured FILE.csv (docs/measured-profiles.md)");
@@ -114,8 +142,9 @@ int run_calibrate(const CalibrateOptions& o) {
   CalibrationProblem p;
   for (const Param& q : ps) p.names.push_back(q.name);
   p.initial.assign(ps.size(), 1.0);
-  p.make_provider = [&c, &ps](const std::vector<double>& v) {
+  p.make_provider = [&c, &ps, &o, &h](const std::vector<double>& v) {
     const auto s = scales(ps, v);
+    check_fitted_factors(c, s, o.measured, h);
     return make_scaled_provider(c, s[0], s[1], s[2]);
   };
   p.input = setup.input;
@@ -152,6 +181,7 @@ int run_calibrate(const CalibrateOptions& o) {
   // the calibrated configuration
   Config cal = c;
   const auto s = scales(ps, r.params);
+  check_fitted_factors(c, s, o.measured, h);
   cal = config_with(cal, "wear.calibration_centrifugal", fmt::format("{}", c.wear.calibration_centrifugal * s[0]), "calibrate");
   cal = config_with(cal, "wear.calibration_gravitational", fmt::format("{}", c.wear.calibration_gravitational * s[1]), "calibrate");
   cal = config_with(cal, "wear.calibration_impact", fmt::format("{}", c.wear.calibration_impact * s[2]), "calibrate");

@@ -274,6 +274,9 @@ int run_compare(const CompareOptions& o) {
                               k.config.forecast);
     } catch (const InputError& e) {
       throw in_case(k, e);  // refused inside the forecast: the key's line, this case's value
+    } catch (const SimulationError& e) {
+      // which case failed (a review, 2026-12-06: exit 3 with CVODE's text and no case)
+      throw SimulationError(fmt::format("case {} ({}): {}", i + 1, k.label, e.what()));
     }
   });
   for (Case& k : cases) {

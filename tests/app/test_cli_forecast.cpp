@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <cctype>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -633,6 +635,26 @@ TEST_CASE("compare of mill speeds by the layer model V-1.2 says its power goes t
   fs::remove_all(dir);
 }
 
+TEST_CASE("compare says which case's forecast failed", "[app][cli][compare]") {
+  // a review (2026-12-06): exit 3 with the integrator's text and no case. At
+  // 0.995 of critical the worn liner brings the mill to critical speed and
+  // the layer model finds no room for a landing element (the forecast test
+  // "a forecast that fails as its worn liner reaches critical speed ...")
+  const fs::path dir = temp_dir("fc_compare_fail");
+  // the fast settings, worn to the mill's own lifter limit (0.075 m), so
+  // that the 0.995 case wears far enough to reach critical speed
+  write_file(dir / "m.toml",
+             std::regex_replace(fast_qiu(), std::regex("min_lifter_height_m = 0.2\n"), "min_lifter_height_m = 0.075\n"));
+  const RunResult r = run_linerlife("compare " + (dir / "m.toml").string() +
+                                    " --vary mill.speed_fraction_critical=0.77,0.995 --jobs 1 --out " +
+                                    (dir / "out").string());
+  INFO(r.err);
+  CHECK(r.code == 3);
+  CHECK_THAT(r.err, Catch::Contains("linerlife: simulation failed: case 2 (mill.speed_fraction_critical=0.995): "));
+  CHECK_FALSE(fs::exists(dir / "out" / "compare.h5"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("compare with two --vary forecasts every combination of their values", "[app][cli][compare]") {
   // a lifter design is a height and a face angle together
   const fs::path dir = temp_dir("fc_compare_grid");
@@ -807,6 +829,31 @@ TEST_CASE("calibrate recovers the wear factor of synthetic scans from the comman
   CHECK_THAT(due.err, Catch::Contains("the last measured profile (" + (dir / "scans.csv").string() + " at "));
   CHECK_THAT(due.err, Catch::Contains("already meets the relining criterion min_lifter_height (lifter height 0.2"));
   CHECK_THAT(due.err, Catch::Contains("[forecast] min_lifter_height_m = 0.245 m at " + (dir / "due.toml").string() + ":"));
+
+  // The same scans labelled a millionth of their hours: the fit asks for a
+  // factor beyond [wear]'s range, and the refusal names the scans, not a line
+  // of the configuration that never held the value (a review, 2026-12-06:
+  // "m.toml:185: wear.calibration_centrifugal = 162754.79...: out of range")
+  {
+    std::string scans = read_file((dir / "scans.csv").string()), fast;
+    std::istringstream in(scans);
+    for (std::string line; std::getline(in, line);) {
+      const auto comma = line.find(',');
+      if (!line.empty() && std::isdigit(static_cast<unsigned char>(line[0])) && comma != std::string::npos)
+        line = fmt::format("{}", std::stod(line.substr(0, comma)) / 1e6) + line.substr(comma);
+      fast += line + "\n";
+    }
+    write_file(dir / "fast.csv", fast);
+    const RunResult bad = run_linerlife("calibrate " + (dir / "m.toml").string() + " --measured " +
+                                        (dir / "fast.csv").string() + " --fit abrasion --out " + (dir / "cal2").string());
+    INFO(bad.err);
+    CHECK(bad.code == 2);
+    CHECK_THAT(bad.err, Catch::Contains((dir / "fast.csv").string() + ": the fit to these profiles asks for [wear] "
+                                        "calibration_centrifugal = "));
+    CHECK_THAT(bad.err, Catch::Contains("Check the hours of the profiles"));
+    CHECK_THAT(bad.err, !Catch::Contains("m.toml:"));
+    CHECK_FALSE(fs::exists(dir / "cal2" / "calibrate.h5"));
+  }
   fs::remove_all(dir);
 }
 
