@@ -101,6 +101,21 @@ ChargeResult EmpiricalModel::run(const ChargeInput& in) const {
                                     r.fraction_critical, r.phi_c));
   for (std::string& n : checked_range_notes("Morrell's model", c.filling, r.fraction_critical))
     res.notes.push_back(std::move(n));
+  // Where the formulas leave their domain (a review, 2026-12-06): the cone
+  // term's 1 / (r_m - r_t) grows without bound as the trunnion nears the
+  // shell (49 GW at r_t 0.4 mm inside r_m), and near the edges of the filling
+  // and speed ranges the cylinder term goes negative.
+  if (r.cone_power_kw > 0 && in.mill.length_m > 0 && mi.cone_length_m > 0 &&
+      r.cone_power_kw / mi.cone_length_m > r.cylinder_power_kw / in.mill.length_m)
+    res.notes.push_back(fmt::format(
+        "Morrell's cone term gives the conical ends {:.0f} kW, more per metre of length than the cylinder's {:.0f} kW: "
+        "it grows as 1 / (r_m - r_t) as the trunnion ({:.3f} m across) nears the diameter inside the liners ({:.3f} "
+        "m); a cone holds less charge than the cylinder, so this figure is not physical",
+        r.cone_power_kw, r.cylinder_power_kw, 2.0 * mi.trunnion_radius_m, 2.0 * rm));
+  if (!(I.net_power_kw >= 0))
+    res.notes.push_back(fmt::format("Morrell's model gives a negative net power ({:.1f} kW) at filling {} and {:.3f} of "
+                                    "critical: outside its domain, the power is not physical here",
+                                    I.net_power_kw, c.filling, r.fraction_critical));
   res.stats.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   res.stats.simulated_s = 0;
   res.stats.realtime_ratio = std::numeric_limits<double>::quiet_NaN();  // no simulated time

@@ -803,3 +803,24 @@ TEST_CASE("on the bundled ball mill version 1.2 puts the charge where the DEM do
   CHECK(angle_diff(i.com_angle_deg, 303.7) < 5.0);
   CHECK(angle_diff(i.toe_deg, 220.0) < 15.0);  // 11 deg short of the DEM's toe (docs/validation/ball-mill.md)
 }
+
+TEST_CASE("Morrell's model says when its cone term or its power leaves the formulas' domain", "[charge][empirical]") {
+  // a review (2026-12-06): a trunnion 0.4 mm inside the shell gave 49 GW with
+  // no word (the cone term's 1 / (r_m - r_t)), and filling 0.4999 a negative
+  // net power (-51.6 kW at 0.05 of critical)
+  const Config qiu = mill_config("qiu2001_sag.toml");
+  const std::string cone = "Morrell's cone term gives the conical ends", negative = "gives a negative net power";
+  Config c = qiu;
+  c.charge.cone_length_m = 1.0;
+  c.charge.trunnion_radius_m = 1.5;  // an ordinary trunnion (0.3 D): no note
+  const std::string ordinary = model_notes("empirical", c);
+  CHECK(ordinary.find(cone) == std::string::npos);
+  CHECK(ordinary.find(negative) == std::string::npos);
+  c.charge.trunnion_radius_m = 4.95;  // 30 mm inside the shell
+  CHECK_THAT(model_notes("empirical", c), Catch::Contains(cone) && Catch::Contains("not physical"));
+  c = qiu;  // the review's mill: nearly half full of balls at 0.05 of critical (0.67 rpm)
+  c.charge.filling = c.charge.ball_filling = 0.4999;
+  c.charge.porosity = 0.6;
+  c.mill.speed_rpm = 0.6701;
+  CHECK_THAT(model_notes("empirical", c), Catch::Contains(negative));
+}
