@@ -135,10 +135,10 @@ std::string worn_power_caveat(const std::string& charge_model, const std::vector
 /// --model dem, on the bundled forecast's profiles at 0, 3000, 6000 and
 /// 7355 h, 20 revolutions each).
 inline constexpr const char* kWornPowerCaveatWhy =
-    "its power on worn liners is not validated beyond that: on the bundled Qiu mill's worn profiles the 2D DEM's "
-    "changes by at most +3.4 % and the layer model's by at most +6.6 % (20 revolutions each; "
-    "docs/models/layer-worn.md). Read the power history as the layer model's, not as the mill motor's load (the liner "
-    "loads come from the same charge)";
+    "its power on worn liners is checked only on the bundled Qiu mill's worn profiles, where at 20 revolutions a "
+    "profile the 2D DEM's changes by at most +3.4 % and the layer model's by at most +6.6 %; a forecast's drives, "
+    "of fewer revolutions, scatter further (docs/models/layer-worn.md). Read the power history as the layer model's, "
+    "not as the mill motor's load (the liner loads come from the same charge)";
 /// compare's notes on its cases, one line per caveat ("linerlife: note:
 /// LABEL: TEXT"), in case order; the worn-power caveat's explanation is given
 /// whole once and then referred to, each case keeping its own figures.

@@ -198,7 +198,7 @@ std::vector<std::string> case_note_lines(const std::vector<std::string>& labels,
         if (explained_in.empty()) explained_in = labels[i];
         else
           x.replace(why, std::string::npos,
-                    fmt::format("its power on worn liners is not validated beyond that (the note on {})", explained_in));
+                    fmt::format("its power on worn liners is checked only on the Qiu mill (the note on {})", explained_in));
       }
       lines.push_back(fmt::format("linerlife: note: {}: {}", labels[i], x));
     }
