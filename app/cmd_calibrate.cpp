@@ -89,8 +89,9 @@ std::array<double, 3> scales(const std::vector<Param>& ps, const std::vector<dou
 // A factor beyond its key's range is the fit's doing, not the file's (a
 // review, 2026-12-06: scans labelled 0.01 h instead of 2,000 h ended with
 // "FILE:185: wear.calibration_centrifugal = 162754.79...: out of range", a
-// value the file never held): say so, naming the scans. The fit's trial
-// factors reach such values only where the profiles ask for them.
+// value the file never held): say so, naming the scans. A trial point of the
+// fit beyond the range fails as before (the same InputError the wear model's
+// range check throws), now with this message.
 void check_fitted_factors(const Config& c, const std::array<double, 3>& s, const std::string& measured,
                           const MeasuredHistory& h) {
   const std::array<std::pair<const char*, double>, 3> fitted{{

@@ -121,7 +121,8 @@ void add_forecast_keys(Schema& s) {
   // (the floors of amplification, amplify_revolutions, euler_step_h and
   // output_interval_h keep a run finite: 1, 1e-9 revolutions, 1e-6 h and
   // 1e-6 h ran without end or out of memory; at 0.1 revolutions and A = 1e3
-  // a step is 0.16 h of the bundled mill; the studies of
+  // a step is 0.16 h of the bundled mill, some 42,000 steps for its life:
+  // hours of wall time, but an end; the studies of
   // docs/validation/forecast.md use A >= 1e5, steps >= 50 h)
   K.push_back(real_key("forecast", "amplification", "-", "Amplify method: wear multiplier A (thesis Table B.1)", 1e3,
                        1e12, false, false, 1e7, [](Config& c, double v) { c.forecast.amplification = v; },

@@ -105,7 +105,7 @@ ChargeResult EmpiricalModel::run(const ChargeInput& in) const {
   // term's 1 / (r_m - r_t) grows without bound as the trunnion nears the
   // shell (49 GW at r_t 0.4 mm inside r_m), and near the edges of the filling
   // and speed ranges the cylinder term goes negative.
-  if (r.cone_power_kw > 0 && in.mill.length_m > 0 && mi.cone_length_m > 0 &&
+  if (r.cone_power_kw > 0 && r.cylinder_power_kw > 0 && in.mill.length_m > 0 && mi.cone_length_m > 0 &&
       r.cone_power_kw / mi.cone_length_m > r.cylinder_power_kw / in.mill.length_m)
     res.notes.push_back(fmt::format(
         "Morrell's cone term gives the conical ends {:.0f} kW, more per metre of length than the cylinder's {:.0f} kW: "
