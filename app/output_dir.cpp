@@ -137,8 +137,11 @@ void check_output_dir_writable(const std::string& dir, const std::vector<std::st
       throw InputError(dir, fmt::format("output folder {} cannot be written (permissions)", dir));
     // the permissions do not tell everything (/proc, a read-only mount): a
     // file made, written and removed at once
-    std::string probe = (p / ".linerlife-probe-XXXXXX").string();
-    const int fd = mkstemp(probe.data());
+    // (named as a temporary of this process: the kill-and-resume test found
+    // a .linerlife-probe-XXXXXX left by a killed run, which no run removed)
+    std::string suffix;
+    std::string probe = writability_probe_template(p.string(), &suffix);
+    const int fd = mkstemps(probe.data(), static_cast<int>(suffix.size()));
     int err = errno;
     bool wrote = false;
     if (fd >= 0) {
@@ -168,6 +171,12 @@ void check_output_dir_writable(const std::string& dir, const std::vector<std::st
     throw InputError(dir, fmt::format("output folder {} cannot be created in {}: {}", dir, parent.string(),
                                       std::strerror(errno)));
   fs::remove(probe, ec);
+}
+
+std::string writability_probe_template(const std::string& dir, std::string* suffix) {
+  const std::string sfx = fmt::format(".tmp.{}", static_cast<long>(getpid()));
+  if (suffix) *suffix = sfx;
+  return (fs::path(dir) / (".linerlife-probe-XXXXXX" + sfx)).string();
 }
 
 void OutputDir::prepare() {

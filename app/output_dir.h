@@ -69,6 +69,13 @@ void lock_output_dir(const std::string& dir);
 /// The lock file lock_output_dir() takes for `dir` (for the tests).
 std::string output_dir_lock_path(const std::string& dir);
 
+/// The name check_output_dir_writable() gives the file it writes into an
+/// existing folder to see that it can (mkstemps template): a temporary of
+/// this process, .linerlife-probe-XXXXXX.tmp.PID, so that a run killed
+/// between making and removing it leaves a file the next run's
+/// OutputDir::prepare() removes. The suffix is ".tmp.PID".
+std::string writability_probe_template(const std::string& dir, std::string* suffix = nullptr);
+
 /// Why a file could not be written, for the message: "its folder DIR no
 /// longer exists (removed during the run?)" when it does not (a review,
 /// 2026-12-06: a folder removed under a running forecast was blamed on a full

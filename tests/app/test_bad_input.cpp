@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "app/output_dir.h"
 #include "cli_runner.h"
 
 using namespace linerlife::test;
@@ -808,6 +809,15 @@ TEST_CASE("a chart that cannot be written is said plainly and leaves no temporar
   const std::string dead = std::to_string(pid_max + 1);
   write_file(out / (".liner_segment.png.tmp." + dead + ".png"), "half a chart");
   write_file(out / (".geometry.h5.tmp." + dead), "half a file");
+  // and the writability probe of a run killed between making and removing it
+  // (2026-12-06: the kill-and-resume test found a .linerlife-probe-XXXXXX
+  // left, which no run removed; the probe is now named as a temporary of its
+  // process): the name a killed run's probe has
+  std::string probe = linerlife::writability_probe_template(out.string());
+  CHECK_THAT(probe, Catch::EndsWith(".tmp." + std::to_string(getpid())));
+  probe.replace(probe.rfind(".tmp.") + 5, std::string::npos, dead);
+  probe.replace(probe.find("XXXXXX"), 6, "a1b2c3");
+  write_file(probe, "");
   RunResult r = run_linerlife("geometry --out " + out.string(), 60);
   INFO(r.err);
   REQUIRE(r.code == 0);  // the results file is complete; only a chart is missing
