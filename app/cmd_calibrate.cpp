@@ -101,11 +101,9 @@ void check_fitted_factors(const Config& c, const std::array<double, 3>& s, const
   }};
   for (const auto& [key, v] : fitted) {
     const KeySpec* spec = config_schema().find("wear", key);
-    if (!spec) continue;
-    const bool low = spec->lo_open ? !(v > spec->lo) : !(v >= spec->lo);
-    const bool high = spec->hi_open ? !(v < spec->hi) : !(v <= spec->hi);
-    if (low || high)
-      throw InputError(measured, fmt::format(
+    if (!spec || spec->accepts(v)) continue;
+    const bool high = v >= spec->lo;  // out of range above
+    throw InputError(measured, fmt::format(
           "{}: the fit to these profiles asks for [wear] {} = {:.4g}, outside what the key allows ({}): the "
           "profiles wear the liner {} than the model does at any allowed calibration. Check the hours of the "
           "profiles ({} to {} h) and that they are of this mill",
@@ -113,7 +111,6 @@ void check_fitted_factors(const Config& c, const std::array<double, 3>& s, const
           h.snapshots.back().hours));
   }
 }
-
 
 int run_calibrate(const CalibrateOptions& o) {
   const Config c = load_config_or_default(o.config);

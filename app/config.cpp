@@ -127,14 +127,14 @@ std::vector<Shutdown> shutdown_list(const toml::array& arr, const std::string& s
   return list;
 }
 
-bool in_range(const KeySpec& k, double v) {
+}  // namespace
+
+bool KeySpec::accepts(double v) const {
   if (!std::isfinite(v)) return false;
-  if (k.lo_open ? !(v > k.lo) : !(v >= k.lo)) return false;
-  if (k.hi_open ? !(v < k.hi) : !(v <= k.hi)) return false;
+  if (lo_open ? !(v > lo) : !(v >= lo)) return false;
+  if (hi_open ? !(v < hi) : !(v <= hi)) return false;
   return true;
 }
-
-}  // namespace
 
 std::string KeySpec::allowed() const {
   if (kind == ConfigValue::Kind::Date) return "YYYY-MM-DD, unquoted: a TOML date";
@@ -470,7 +470,7 @@ Config load_config_text(const std::string& text, const std::string& source, cons
       }
       const bool numeric = spec->kind == ConfigValue::Kind::Real || spec->kind == ConfigValue::Kind::Int;
       const double num = spec->kind == ConfigValue::Kind::Int ? static_cast<double>(v.integer) : v.real;
-      if (numeric && !in_range(*spec, num))
+      if (numeric && !spec->accepts(num))
         throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: out of range; allowed {}", source, line, sname, kname,
                                            node_text(knode), spec->allowed()));
       if (spec->kind == ConfigValue::Kind::String && !spec->choices.empty()) {

@@ -91,6 +91,8 @@ struct KeySpec {
   std::string full_name() const { return section + "." + name; }
   /// "0 < value < 0.5", "one of \"ccw\", \"cw\"", ...
   std::string allowed() const;
+  /// Whether a finite number v lies in the allowed range.
+  bool accepts(double v) const;
 };
 
 struct Schema {
