@@ -65,6 +65,24 @@ const char* kind_name(ConfigValue::Kind k) {
   return "";
 }
 
+/// A computed limit as a message prints it: `digits` significant digits,
+/// rounded away from the refused side, so that the printed value is itself
+/// allowed (rounding to nearest printed "allowed 0.6701 <= speed_rpm" for a
+/// limit of 0.670136, a value the loader refuses). `lower` for a lower bound
+/// (rounded up), else an upper bound (rounded down); more digits where a
+/// rounding at `digits` would cross zero.
+std::string limit_text(double x, bool lower, int digits = 4) {
+  if (!std::isfinite(x) || x == 0) return fmt::format("{}", x);
+  for (int p = digits; p <= 17; ++p) {
+    const double scale = std::pow(10.0, std::floor(std::log10(std::abs(x))) - (p - 1));
+    const double r = lower ? std::ceil(x / scale) * scale : std::floor(x / scale) * scale;
+    const std::string s = fmt::format("{:.{}g}", r, p);
+    const double v = std::stod(s);
+    if ((lower ? v >= x : v <= x) && (v > 0) == (x > 0)) return s;
+  }
+  return fmt::format("{}", x);
+}
+
 /// A float that holds a whole number, as `64.0` does (node_text() echoes it
 /// with its decimal point; an integer key's refusal says how to write it).
 bool whole_float(double x) { return std::isfinite(x) && x == std::floor(x) && std::abs(x) < 1e15; }
@@ -316,15 +334,15 @@ void check_and_resolve(Config& c) {
       fail_at(c, "mill.speed_rpm",
               fmt::format("speed_rpm = {} is only {:.3g} of the critical speed ({:.3f} rpm for the diameter inside the "
                           "liners, {:.4f} m): below {} of critical the charge does not tumble, it creeps up the shell "
-                          "and slides back; allowed {:.4g} <= speed_rpm < {:.3f}",
+                          "and slides back; allowed {} <= speed_rpm < {}",
                           c.mill.speed_rpm, phi, nc, lm.effective_diameter_m, kMinSpeedFractionCritical,
-                          kMinSpeedFractionCritical * nc, nc));
+                          limit_text(kMinSpeedFractionCritical * nc, true), limit_text(nc, false, 5)));
     if (phi >= 1.0)
       fail_at(c, "mill.speed_rpm",
               fmt::format("speed_rpm = {} is {:.3f} of the critical speed ({:.3f} rpm for the diameter inside the "
                           "liners, {:.4f} m): at or above critical the charge centrifuges; allowed 0 < speed_rpm < "
-                          "{:.3f}",
-                          c.mill.speed_rpm, phi, nc, lm.effective_diameter_m, nc));
+                          "{}",
+                          c.mill.speed_rpm, phi, nc, lm.effective_diameter_m, limit_text(nc, false, 5)));
   }
   // Media must fit between two lifters (the gap at the plate).
   if (!L.measured && L.design.lifter_height_m > 0) {
@@ -519,13 +537,22 @@ Config load_config_text(const std::string& text, const std::string& source, cons
     if (end.year > 9999) {
       const double days_max =
           static_cast<double>(days_from_civil({9999, 12, 31}) - days_from_civil(cal.start) + 1);  // to its midnight
+      // the hours that fit, and the availability that fits these hours (the
+      // operating hours of a calendar span are proportional to availability);
+      // both rounded towards what is allowed: at availability = 1e-9 the
+      // hours that fit are 0.07 h, and "<= 0 h" allowed nothing
+      const double h_fit = cal.operating_hours_after(days_max);
+      const double a_fit = cal.availability * hours / h_fit;
+      const std::string h_text = h_fit >= 1 ? fmt::format("{:.0f}", std::floor(h_fit)) : limit_text(h_fit, false);
+      const std::string alternative = a_fit <= 1 && h_fit > 0 ? fmt::format("availability >= {}", limit_text(a_fit, true))
+                                                              : std::string("an earlier start_date");
       fail_at(c, "forecast.max_operating_hours",
               fmt::format("max_operating_hours = {} h ends on {}, at availability = {} from start_date = {}{}: a "
                           "relining date after 9999-12-31 cannot be written as a date; allowed max_operating_hours "
-                          "<= {:.0f} h here, or a higher availability",
+                          "<= {} h here, or {}",
                           hours, iso_date(end), cal.availability, iso_date(cal.start),
-                          cal.shutdowns.empty() ? "" : fmt::format(" with {} shutdowns", cal.shutdowns.size()),
-                          std::floor(cal.operating_hours_after(days_max))));
+                          cal.shutdowns.empty() ? "" : fmt::format(" with {} shutdowns", cal.shutdowns.size()), h_text,
+                          alternative));
     }
   }
   check_and_resolve(c);

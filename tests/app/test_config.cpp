@@ -184,10 +184,15 @@ TEST_CASE("the declared ranges are the ones that work", "[app][config][input]") 
   refused(edited("liner", "segments", "1"), {"segments = 1: out of range; allowed 2 <= value <= 400"});
   CHECK(load_config_text(edited("liner", "segments", "2"), "mill.toml", ".").liner.segments == 2);
   // a mill below 0.05 of critical does not tumble; its charge runs never ended
+  // the limits printed are themselves allowed: the lower one (0.670136 rpm)
+  // rounded up, the critical speed rounded down (0.6701 was printed, and refused)
   refused(edited("mill", "speed_rpm", "1e-9"),
-          {"speed_rpm = 1e-09 is only", "allowed 0.6701 <= speed_rpm < 13.402"});
+          {"speed_rpm = 1e-09 is only", "allowed 0.6702 <= speed_rpm < 13.402"});
   refused(edited("mill", "speed_rpm", "0.67"), {"speed_rpm = 0.67 is only 0.05 of the critical speed"});
-  CHECK_NOTHROW(load_config_text(edited("mill", "speed_rpm", "0.671"), "mill.toml", "."));
+  refused(edited("mill", "speed_rpm", "0.6701"), {"speed_rpm = 0.6701 is only 0.05 of the critical speed"});
+  CHECK_NOTHROW(load_config_text(edited("mill", "speed_rpm", "0.6702"), "mill.toml", "."));
+  CHECK_NOTHROW(load_config_text(edited("mill", "speed_rpm", "13.402"), "mill.toml", "."));
+  refused(edited("mill", "speed_rpm", "13.403"), {"speed_rpm = 13.403 is 1.000 of the critical speed", "speed_rpm < 13.402"});
   refused(edited_text(removed("speed_rpm"), "mill", "speed_fraction_critical", "0.04"),
           {"speed_fraction_critical = 0.04: out of range; allowed 0.05 <= value < 1"});
   CHECK_NOTHROW(load_config_text(edited_text(removed("speed_rpm"), "mill", "speed_fraction_critical", "0.05"),
@@ -353,6 +358,16 @@ TEST_CASE("a forecast horizon whose date would pass 9999-12-31 is refused", "[ap
                   "2027-01-01: a relining date after 9999-12-31 cannot be written as a date; allowed "
                   "max_operating_hours <= 698898 h here"});
   CHECK_NOTHROW(load_config_text(edited_text(t, "forecast", "max_operating_hours", "698898"), "mill.toml", "."));
+  // at availability 1e-9 the hours that fit are 0.07 h: the message gave
+  // "max_operating_hours <= 0 h", which nothing meets; both ways out it names
+  // now load (the hours rounded down, the availability up)
+  {
+    const std::string a = edited("forecast", "availability", "1e-9");
+    refused(a, {"allowed max_operating_hours <= 0.06988 h here, or availability >= 0.0007155"});
+    CHECK_NOTHROW(load_config_text(edited_text(a, "forecast", "max_operating_hours", "0.06988"), "mill.toml", "."));
+    CHECK_NOTHROW(load_config_text(edited("forecast", "availability", "0.0007155"), "mill.toml", "."));
+    refused(edited("forecast", "availability", "0.0007154"), {"cannot be written as a date"});
+  }
   // a start late in the year 9999 leaves room for no default horizon
   refused(edited("forecast", "start_date", "9999-01-01"), {"max_operating_hours = 50000 h ends on +10005-"});
 }
