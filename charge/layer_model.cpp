@@ -25,6 +25,7 @@
 #include "charge/lifter_launch.h"
 #include "charge/liner_ride_table.h"
 #include "charge/morrell_c_model.h"
+#include "charge/settling_note.h"
 #include "charge/slip_model.h"
 #include "charge/slot_map.h"
 #include "charge/slurry_drag.h"
@@ -2875,6 +2876,8 @@ ChargeResult LayerSim::run() {
   const double revs = in_.revolutions > 0 ? in_.revolutions : 2.0;
   t_avg0_ = in_.model.settle_revolutions * T_rev;
   t_end_ = t_avg0_ + revs * T_rev;
+  if (const std::string n = settling_note("[model] settle_revolutions", in_.model.settle_revolutions, revs); !n.empty())
+    notes_.push_back(n);
   const long long n_steps = static_cast<long long>(std::ceil(t_end_ / dt_ - 1e-9));
   t_end_ = n_steps * dt_;
   // accumulators

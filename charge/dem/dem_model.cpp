@@ -11,6 +11,7 @@
 #include <omp.h>
 
 #include "charge/particle_indicators.h"
+#include "charge/settling_note.h"
 #include "geometry/errors.h"
 #include "geometry/metrics.h"
 
@@ -399,6 +400,8 @@ ChargeResult run_dem(const ChargeInput& in, DemSetup setup, DemRunInfo* info_out
         "many short elements; check the profile or coarsen [remesh] element_size_m",
         sys.wall_hits_dropped(), DemSystem::kMaxWallHits, sys.wall_springs_dropped(), DemSystem::kWallSlots,
         sys.wall_contact_steps()));
+  if (const std::string note = settling_note("[dem] settle_revolutions", spec.settle_revolutions, revs); !note.empty())
+    res.notes.push_back(note);
   RunStats& st = res.stats;
   st.simulated_s = sys.time();
   st.wall_s = wall;

@@ -514,6 +514,31 @@ TEST_CASE("the incremental maps and relaxation reproduce full sweeps exactly", "
   }
 }
 
+TEST_CASE("a run that averages the charge's rise from rest says so", "[charge][layer]") {
+  // The Qiu mill from rest over 0.05 revolution: the charge has not reached
+  // its shoulder (1,073 kW against 5,946 kW settled, layer.md §Settling).
+  // The note is warranted where it appears, and absent from 0.5 revolution.
+  const Config c = mill_config("qiu2001_sag.toml");
+  const LinerSurface s = build_liner_surface(c.mill, c.liner);
+  auto note_of = [](const ChargeResult& r) {
+    for (const std::string& n : r.notes)
+      if (n.find("settle_revolutions") != std::string::npos) return n;
+    return std::string();
+  };
+  const ChargeResult cold = run_model("layer", charge_input(c, s, 0.05, 0.0));
+  const ChargeResult settled = run_model("layer", charge_input(c, s, 1.0, 1.0));
+  // what the note warns of: more than half the power missing, the toe 30 deg short
+  CHECK(cold.indicators.net_power_w_per_m < 0.5 * settled.indicators.net_power_w_per_m);
+  CHECK(cold.indicators.toe_deg < settled.indicators.toe_deg - 30);
+  CHECK_THAT(note_of(cold), Catch::Contains("[model] settle_revolutions = 0: ") &&
+                                Catch::Contains("100 % of the averaged time is before that") &&
+                                Catch::Contains("docs/models/layer.md"));
+  CHECK(note_of(settled).empty());
+  // the share is of the averaged time before half a revolution
+  CHECK_THAT(note_of(run_model("layer", charge_input(c, s, 1.0, 0.25))), Catch::Contains("25 % of the averaged time"));
+  CHECK(note_of(run_model("layer", charge_input(c, s, 0.1, 0.5))).empty());
+}
+
 TEST_CASE("staggered initial phases change the start, not the settled charge", "[charge][layer]") {
   // docs/models/layer.md §Settling: the layers' phases at t = 0 only decide
   // which lattice the run starts from; averaged over 12 revolutions the two

@@ -158,6 +158,25 @@ TEST_CASE("dem runs repeat exactly for a seed whatever the thread count (1 to 3)
   CHECK(run_dem(p.in).indicators.net_power_w_per_m != a);
 }
 
+TEST_CASE("a dem run that averages the charge's rise from rest says so", "[dem][model]") {
+  // the discs start in rows at the bottom; the same rule and note as the
+  // layer model's (charge/settling_note.h)
+  Pilot p;
+  p.in.model.dem.revolutions = 0.2;
+  p.in.model.dem.settle_revolutions = 0.1;
+  const ChargeResult cold = run_dem(p.in);
+  std::string note;
+  for (const std::string& n : cold.notes)
+    if (n.find("settle_revolutions") != std::string::npos) note = n;
+  CHECK_THAT(note, Catch::Contains("[dem] settle_revolutions = 0.1: ") &&
+                       Catch::Contains("100 % of the averaged time is before that"));
+  p.in.model.dem.settle_revolutions = 0.5;
+  const ChargeResult settled = run_dem(p.in);
+  CHECK(std::none_of(settled.notes.begin(), settled.notes.end(),
+                     [](const std::string& n) { return n.find("settle_revolutions") != std::string::npos; }));
+  CHECK(settled.stats.simulated_s > cold.stats.simulated_s);
+}
+
 TEST_CASE("a dem run reports its progress, rising to 1, and the report changes nothing", "[dem][model]") {
   // `linerlife charge --model dem` shows it on a terminal (tens of seconds on
   // the bundled mill): one report per sampling chunk (72 a revolution),
