@@ -212,7 +212,7 @@ TEST_CASE("values that hung, ran out of memory or failed inside are refused at t
       // charge --revolutions 1 ran for over a minute
       {"speed_rpm = ", "speed_rpm = 1e-9", "charge --revolutions 1",
        {"speed_rpm = 1e-09 is only 7.46e-11 of the critical speed", "below 0.05 of critical",
-        "allowed 0.6701 <= speed_rpm < 13.402"}},
+        "allowed 0.6702 <= speed_rpm < 13.402"}},
       {"speed_rpm = ", "speed_fraction_critical = 0.01", "charge --revolutions 1",
        {"[mill] speed_fraction_critical = 0.01: out of range; allowed 0.05 <= value < 1"}},
       // hung in the DEM

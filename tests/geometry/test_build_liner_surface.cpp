@@ -203,6 +203,18 @@ TEST_CASE("impossible lifters are refused naming the key", "[geometry][build][in
   refuse(d, "liner.corner_radius_m", "does not fit");
   d = qiu_liner(0.05);
   refuse(d, "liner.element_size_m", "too coarse");
+  // a top or a lifter under four of the finest elements (1 mm) is the
+  // lifter's fault, not the element size's: the message asked for
+  // element_size_m <= 0.00075 m, below its floor
+  d = qiu_liner(kMinElementSizeM);
+  d.design.top_width_m = 0.003;
+  refuse(d, "liner.lifter_top_width_m", "lifter_top_width_m = 0.003 m is under four of the finest surface elements");
+  refuse(d, "liner.lifter_top_width_m", "allowed lifter_top_width_m >= 0.004 m");
+  d.design.top_width_m = 0.004;
+  CHECK(build_liner_surface(qiu_mill(), d).n_elements() > 0);
+  d = qiu_liner(kMinElementSizeM);
+  d.design.lifter_height_m = 0.002;
+  refuse(d, "liner.lifter_height_m", "allowed lifter_height_m >= 0.004 m, or lifter_height_m = 0 for no lifter");
   d = qiu_liner();
   d.design.plate_thickness_m = 0;
   refuse(d, "liner.plate_thickness_m", "must be > 0");
