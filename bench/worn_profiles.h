@@ -94,6 +94,34 @@ inline std::vector<Eigen::Vector2d> blend_profiles(const std::vector<Eigen::Vect
   return out;
 }
 
+/// A whole ring stored in a results file (`/surface`, `/final_surface`:
+/// nodes, segment_begin, segment_design; docs/output.md), rebuilt from its
+/// first segment of each design (a forecast's ring repeats them), so that a
+/// hi-lo ring keeps its low lifters, which `/forecast/profiles` (segment 0,
+/// the high lifter) does not hold.
+inline LinerSurface read_ring(const std::string& h5_path, const std::string& group, double shell_radius_m,
+                              std::vector<std::vector<Eigen::Vector2d>>* design_profiles = nullptr) {
+  H5Reader h5(h5_path);
+  const std::vector<double> xy = h5.doubles(group + "/nodes");
+  const std::vector<long long> begin = h5.ints(group + "/segment_begin");
+  const std::vector<long long> design_ll = h5.ints(group + "/segment_design");
+  const int S = static_cast<int>(design_ll.size());
+  const size_t n = xy.size() / 2;
+  std::vector<int> design(design_ll.begin(), design_ll.end());
+  const int n_designs = *std::max_element(design.begin(), design.end()) + 1;
+  std::vector<std::vector<Eigen::Vector2d>> profiles(static_cast<size_t>(n_designs));
+  for (int d = 0; d < n_designs; ++d) {
+    const int k = static_cast<int>(std::find(design.begin(), design.end(), d) - design.begin());
+    const double a = -k * 2.0 * M_PI / S, c = std::cos(a), sn = std::sin(a);
+    for (long long i = begin[k]; i <= begin[k + 1]; ++i) {
+      const size_t q = static_cast<size_t>(i) % n;
+      profiles[d].emplace_back(c * xy[2 * q] - sn * xy[2 * q + 1], sn * xy[2 * q] + c * xy[2 * q + 1]);
+    }
+  }
+  if (design_profiles) *design_profiles = profiles;
+  return assemble_ring(shell_radius_m, S, profiles, design);
+}
+
 /// Segment 0 of a ring, as a segment profile.
 inline std::vector<Eigen::Vector2d> segment0_profile(const LinerSurface& s) {
   std::vector<Eigen::Vector2d> p;
