@@ -165,6 +165,7 @@ int run_forecast_command(const ForecastOptions& o) {
   note_drive_notes(f.notes, f.stats.charge_redrives);
   const LifeRecord& last = f.history.back();
   const std::vector<std::string> caveats{worn_power_caveat(c.model.charge, f.history), dense_profile_caveat(c.liner),
+                                         hilo_caveat(c.model.charge, c.liner),
                                          explicit_step_caveat(c.forecast, c.mill.speed_rpm, f),
                                          few_drives_caveat(c.forecast, f)};
   const std::string caveat = caveat_lines(caveats);  // as forecast.h5 keeps them

@@ -230,6 +230,18 @@ std::string dense_profile_caveat(const LinerDesign& liner) {
       median * 1e3);
 }
 
+std::string hilo_caveat(const std::string& charge_model, const LinerDesign& liner) {
+  if (charge_model != "layer" || !liner.hi_lo) return "";
+  // The figures: docs/models/layer-worn.md, "Hi-lo liners" (bench_layer_worn
+  // --rings 1, and --model dem, on the rings of the bundled mill's hi-lo
+  // forecasts, 2026-12-06).
+  return "a hi-lo liner: the layer model's charge on worn hi-lo rings is checked against the 2D DEM on one forecast "
+         "of the bundled mill (0.125 m low lifters) only, and it is not reliable there: as the low lifters wear to "
+         "under one ball the charge over them can slump (at the end of that life 3,427 kW where the DEM's stays at "
+         "6,291 kW, with the liner loads that go with it; docs/models/layer-worn.md, \"Hi-lo liners\"). Read the "
+         "relining date as indicative, or drive the forecast with [model] charge = \"dem\"";
+}
+
 std::string explicit_step_caveat(const ForecastSpec& spec, double speed_rpm, const ForecastResult& f) {
   if (spec.method == ForecastMethod::Ode || !(f.operating_hours > 0)) return "";
   const bool amplify = spec.method == ForecastMethod::Amplify;

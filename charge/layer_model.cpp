@@ -38,6 +38,9 @@ namespace {
 using V = Eigen::Vector2d;
 constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// [rad] per-segment angles closer than this are one angle (rounding between the
+// segments of a ring of identical lifters: about 5e-12 rad)
+constexpr double kAlikeRad = 1e-9;
 // Pocket loads: the liner takes a share of a pocket's push where the disc's
 // contact faces it, the face at most this far from the radial
 // (docs/models/layer.md §7, "Pocket loads"; lifter faces of 0-60 deg and their corners)
@@ -108,7 +111,9 @@ struct Layer {
   double phase = 0;      // [rad] angle of slot 0 at the start of the current step, in [0, 2 pi)
   int offset = 0;        // first slot in the occupancy array
   bool held = false;     // held by the lifters of at least one segment
-  double release = kInf; // [rad] flight angle of an unheld layer (+inf: never leaves)
+  double release = kInf; // [rad] flight angle of an unheld layer (+inf: never leaves); of a held
+                         // layer the smallest over the segments of its own angle (rel_seg_)
+  double release_max = -kInf;  // [rad] the largest finite of those (departures()' scan)
   double rel_min = kInf, rel_max = -kInf;  // [rad] range of the per-segment flight angles of a held layer
 };
 
@@ -312,8 +317,18 @@ class LayerSim {
   /// The slot is on the rising side beyond the flight angle of its layer.
   bool past_flight_angle(int k, int s, double tau) const;
   /// The same from the slot's direction (c, sn) = slot_dir(k, s, tau), where
-  /// the caller has it.
-  bool past_flight_dir(int k, double c, double sn) const { return c > 0 && sn > sin_fa_[k]; }
+  /// the caller has it. The flight angle is that of the segment the direction
+  /// lies over at tau (the lifter holding the element; sin_fa_seg_), which is
+  /// the layer's own (sin_fa_, their smallest) unless the segments differ.
+  bool past_flight_dir(int k, double c, double sn, double tau) const {
+    if (!(c > 0 && sn > sin_fa_[k])) return false;
+    if (!fa_by_segment_[static_cast<size_t>(k)]) return true;
+    return sn > sin_fa_seg_[static_cast<size_t>(k) * seg_.size() + segment_at(c, sn, tau)];
+  }
+  /// The segment under direction (c, sn) at time tau.
+  int segment_at(double c, double sn, double tau) const {
+    return canon_.surface.segment_of_angle(std::atan2(sn, c) - mill_angle(tau));
+  }
   /// An element just placed in slot s of layer j at time tau: if it is past
   /// where the layer lets go, it leaves now; if it gets there before the end
   /// of the current step, it leaves then (departures() has already run).
@@ -492,6 +507,12 @@ class LayerSim {
   std::vector<double> slot_cos_, slot_sin_; // cos, sin of s delta_j per slot
   mutable std::vector<double> dir_tau_, dir_c_, dir_s_;  // cache of slot_dir(): the phase direction at dir_tau_
   std::vector<double> sin_fa_;              // sin of each layer's flight angle (+inf: never)
+  // sin of the flight angle of layer j over segment k, [j * segments + k]:
+  // min(layer's, that segment's lifter release); fa_by_segment_[j] where they
+  // differ (a hi-lo ring), else sin_fa_ alone is used
+  std::vector<double> sin_fa_seg_;
+  std::vector<double> rel_seg_;  // [rad] layer j's own flight angle over segment k, [j * segments + k] (setup_flight_angles())
+  std::vector<char> fa_by_segment_;
   double tan_g_ = 0;                        // tan of the angle of repose
   std::vector<int> elem_layer_, elem_slot_; // -1 when flying
   std::vector<double> elem_y_entry_;        // [m] height where it last entered the charge
@@ -1004,6 +1025,29 @@ void LayerSim::setup_layers() {
     const double fa = flight_angle(j);
     sin_fa_[j] = std::isfinite(fa) ? std::sin(fa) : kInf;
   }
+  // Per segment (docs/models/layer.md §3, "Per segment"; layer-worn.md, "Hi-lo liners"):
+  // over the segment of a lifter that holds layer j the foot-stability rules
+  // take that lifter's release, not the smallest over the ring. On a ring
+  // whose lifters are alike the two are the same; on a worn hi-lo ring the
+  // low lifters' early release (a worn face) let the relaxation roll the high
+  // lifters' pockets down 31 deg before their release (the bundled mill with
+  // 0.125 m low lifters at 4,244 h: 2,367 kW, toe 202 deg, 0.4 % of the
+  // charge airborne).
+  const size_t S = seg_.size();
+  sin_fa_seg_.assign(static_cast<size_t>(nl) * S, kInf);
+  fa_by_segment_.assign(static_cast<size_t>(nl), 0);
+  for (int j = 0; j < nl; ++j)
+    for (size_t k = 0; k < S; ++k) {
+      double fa = rel_seg_[static_cast<size_t>(j) * S + k];
+      if (j < n_held_layers_) {
+        const HeldLaunch& h = held_[static_cast<size_t>(j)][k];
+        if (h.held && h.released) fa = std::min(fa, h.release);
+      }
+      const double sf = std::isfinite(fa) ? std::sin(fa) : kInf;
+      sin_fa_seg_[static_cast<size_t>(j) * S + k] = sf;
+      if (std::isfinite(sf) != std::isfinite(sin_fa_[j]) || sf - sin_fa_[j] > kAlikeRad)
+        fa_by_segment_[static_cast<size_t>(j)] = 1;
+    }
   tan_g_ = std::tan(gamma_);
 }
 
@@ -1093,7 +1137,19 @@ void LayerSim::setup_flight_angles() {
   // angle of the layer outside, its lifters' releases included (what a layer
   // in a lifter's pocket rests on); prev_bed: the same chain without the
   // lifters' releases (what a bed layer above the lifters rests on).
-  double prev_min = kInf, prev_bed = kInf;
+  //
+  // Per segment (since 2026-12-06): a ball of a held layer rides over one
+  // segment with the lifters and rests on the layer outside it over that
+  // segment, so prev_min is kept per segment (prev_seg[k]); the layer's own
+  // flight angle over segment k is rel_seg_[j S + k]. On a ring whose
+  // lifters are alike every segment has the same chain and the same angles
+  // as the one chain before; on a hi-lo ring the low lifters' releases no
+  // longer set the flight angle of the layers over the high lifters (on the
+  // bundled mill with 0.125 m low lifters worn for 4,244 h they let layer 1
+  // go 30 deg before its high lifter did).
+  double prev_bed = kInf;
+  std::vector<double> prev_seg(static_cast<size_t>(S), kInf);
+  rel_seg_.assign(static_cast<size_t>(nl) * static_cast<size_t>(S), kInf);
   for (int j = 0; j < nl; ++j) {
     Layer& l = L_[j];
     l.held = false;
@@ -1125,7 +1181,7 @@ void LayerSim::setup_flight_angles() {
         // without this floor that released layer j - and, through the
         // support rule, every layer inside it - far below the outer layer,
         // and the layer jumped back to the unheld rule at h = j d.
-        const double bed_hold = j >= 1 && l.omega > 0 ? std::min(davis(j), prev_min) : -kInf;
+        const double bed_hold = j >= 1 && l.omega > 0 ? std::min(davis(j), prev_seg[static_cast<size_t>(k)]) : -kInf;
         const LifterLaunch ll = lifter_launch(omega_, r0, r_crest, a_, alpha, mu_, in_.model.lifter_slide, cl, bed_hold);
         h.released = ll.released;
         if (!ll.released) continue;
@@ -1152,9 +1208,33 @@ void LayerSim::setup_flight_angles() {
     // power +57 % over the Qiu mill's life, where the DEM's charge hardly
     // moves on the same profiles (+3 %; docs/models/layer-worn.md).
     const double own = std::min(l.omega > 0 ? davis(j) : kInf, cl);
-    const double th = std::min(own, l.held ? prev_min : prev_bed);
-    l.release = th;
-    prev_min = l.held ? std::min(l.rel_min, th) : th;
+    l.release = kInf;
+    l.release_max = -kInf;
+    for (int k = 0; k < S; ++k) {
+      const size_t q = static_cast<size_t>(j) * static_cast<size_t>(S) + static_cast<size_t>(k);
+      const bool held_here = j < n_held_layers_ && held_[static_cast<size_t>(j)][static_cast<size_t>(k)].held;
+      const double th = std::min(own, held_here ? prev_seg[static_cast<size_t>(k)] : prev_bed);
+      rel_seg_[q] = th;
+      l.release = std::min(l.release, th);
+      if (std::isfinite(th)) l.release_max = std::max(l.release_max, th);
+    }
+    for (int k = 0; k < S; ++k) {
+      const size_t q = static_cast<size_t>(j) * static_cast<size_t>(S) + static_cast<size_t>(k);
+      double p = rel_seg_[q];
+      if (j < n_held_layers_) {
+        const HeldLaunch& h = held_[static_cast<size_t>(j)][static_cast<size_t>(k)];
+        if (h.held && h.released) p = std::min(p, h.release);
+      }
+      prev_seg[static_cast<size_t>(k)] = p;
+    }
+    // Segments alike to rounding (a ring of identical lifters: their releases
+    // differ by about 5e-12 rad, the rotations of one profile) share one
+    // chain, the smallest, as before the chain was kept per segment; so such
+    // a ring runs bit for bit as it did.
+    {
+      const auto [lo, hi] = std::minmax_element(prev_seg.begin(), prev_seg.end());
+      if (std::isfinite(*lo) && std::isfinite(*hi) && *hi - *lo <= kAlikeRad) std::fill(prev_seg.begin(), prev_seg.end(), *lo);
+    }
     prev_bed = std::min(own, prev_bed);
   }
 }
@@ -1316,7 +1396,7 @@ void LayerSim::departures(double t0, double t1) {
     const double wdt = l.omega * dt;
     if (l.held) {
       // per-segment flight angles: scan the window between the lowest and highest
-      const double lo = std::min(l.rel_min, l.release), hi = std::max(l.rel_max, std::isfinite(l.release) ? l.release : -kInf);
+      const double lo = std::min(l.rel_min, l.release), hi = std::max(l.rel_max, l.release_max);
       if (!std::isfinite(lo)) continue;
       const double u = wrap2pi(lo - l.phase);
       const int s_lo = static_cast<int>(ceil_exact((u - 2 * wdt) * l.inv_delta));
@@ -1332,10 +1412,27 @@ void LayerSim::departures(double t0, double t1) {
         // a lifter's pocket leave at its angle, the rest of the layer as unheld
         if (pocket_balls_ >= 0) seg = pocket_lifter(j, seg, psi);
         const HeldLaunch& h = seg >= 0 ? held_[j][seg] : kUnheldLaunch;
-        const double rel = h.held ? (h.released ? h.release : kInf) : l.release;
-        if (!std::isfinite(rel)) continue;
-        const double w = remainder_2pi(rel - a0);
-        if (w > -wdt && w <= wdt) dep_events_.push_back({t0 + w / l.omega, j, si, h.held ? seg : -1});
+        // over a segment whose lifter does not hold it the layer's own angle
+        // there (rel_seg_); the release study's elements outside every
+        // pocket (seg = -1) the layer's smallest, as before
+        const double rel = h.held ? (h.released ? h.release : kInf)
+                                  : seg >= 0 ? rel_seg_[static_cast<size_t>(j) * seg_.size() + static_cast<size_t>(seg)]
+                                             : l.release;
+        if (std::isfinite(rel)) {
+          const double w = remainder_2pi(rel - a0);
+          if (w > -wdt && w <= wdt) dep_events_.push_back({t0 + w / l.omega, j, si, h.held ? seg : -1});
+        }
+        // an element still over a lifter past the lifter's release came in after it
+        // (fell or landed there): part of the bed, it leaves at the layer's own
+        // angle there (docs/models/layer.md §3, "Per segment", rule 4 of
+        // layer-worn.md "Hi-lo liners")
+        if (h.held && h.released && seg >= 0) {
+          const double rb = rel_seg_[static_cast<size_t>(j) * seg_.size() + static_cast<size_t>(seg)];
+          if (std::isfinite(rb) && rb > h.release) {
+            const double w = remainder_2pi(rb - a0);
+            if (w > -wdt && w <= wdt) dep_events_.push_back({t0 + w / l.omega, j, si, -1});
+          }
+        }
       }
     } else {
       if (!std::isfinite(l.release)) continue;
@@ -1867,7 +1964,7 @@ bool LayerSim::toe_ward_room(double& theta, double tau, bool holdable, int& k_ou
 bool LayerSim::past_flight_angle(int k, int s, double tau) const {
   double c, sn;
   slot_dir(k, s, tau, c, sn);
-  return past_flight_dir(k, c, sn);
+  return past_flight_dir(k, c, sn, tau);
 }
 
 void LayerSim::place(int id, int k, int s, double tau) {
@@ -1896,7 +1993,7 @@ void LayerSim::place(int id, int k, int s, double tau) {
   // Still past the flight angle (the surface below is full): the surface flow
   // carries it down to the toe, the first column against the rotation with
   // room at a place its layer can hold.
-  if (past_flight_dir(k, cf, sf)) {
+  if (past_flight_dir(k, cf, sf, tau)) {
     double theta = slot_angle(k, s, tau);
     int kk, sk;
     if (toe_ward_room(theta, tau, true, kk, sk)) {
@@ -1920,7 +2017,7 @@ __attribute__((always_inline)) inline bool LayerSim::roll_target(int k, int s, d
   const int id = occ(k, s);
   const double th = slot_angle(k, s, tau);
   const double x = L_[k].r * c, y = L_[k].r * sn_th;
-  const bool past = past_flight_dir(k, c, sn_th);
+  const bool past = past_flight_dir(k, c, sn_th, tau);
   // the angle-of-repose rule is the foot's: it acts on the toe side of the
   // mill (the descending half); layers held by lifters do not roll
   const bool repose = c < 0 && !L_[k].held;
@@ -2235,7 +2332,7 @@ __attribute__((always_inline)) inline bool LayerSim::relax_candidate_exact(int s
   const int st = slot_of(k, th, tau);
   double ct, stp;
   slot_dir(k, st, tau, ct, stp);
-  if (past_flight_dir(k, ct, stp)) return true;
+  if (past_flight_dir(k, ct, stp, tau)) return true;
   if (!unheld) return false;
   const double x = L_[k].r * ct, y = L_[k].r * stp;
   // The repose bound first (cheaper than the overhang's look at the cell
@@ -2292,7 +2389,18 @@ void LayerSim::check_departure(int j, int s, double tau, double sn) {
   // exceeds sin(flight angle)) it falls on at once. One that reaches its
   // flight angle later is launched by departures(), which also looks one
   // step back for elements placed after its scan.
-  if (sn > sin_fa_[j] + 1e-12) launch(j, s, tau, -1, true);
+  if (!(sn > sin_fa_[j] + 1e-12)) return;
+  if (l.held) {
+    // a held layer's element placed past its lifter's release is part of the
+    // bed there: it leaves at once only past the layer's own angle over that
+    // segment (until 2026-12-06 past the smallest angle of the ring, through
+    // which the bed over the pockets drained: layer-worn.md, "Hi-lo liners")
+    double c, snd;
+    slot_dir(j, s, tau, c, snd);
+    const double rb = rel_seg_[static_cast<size_t>(j) * seg_.size() + static_cast<size_t>(segment_at(c, snd, tau))];
+    if (!(std::isfinite(rb) && sn > std::sin(rb) + 1e-12)) return;
+  }
+  launch(j, s, tau, -1, true);
 }
 
 void LayerSim::support_sweep(double tau) {
@@ -2859,10 +2967,13 @@ ChargeResult LayerSim::run() {
     for (int j = 0; j < std::min(n_open_, n_held_layers_); ++j) {
       const double fa = flight_angle(j);
       if (!L_[j].held || !(L_[j].omega > 0) || !std::isfinite(fa)) continue;
-      for (const HeldLaunch& h : held_[j]) {
-        if (!h.held || !h.released || !(h.release > fa)) continue;
-        const double share = std::min(1.0, (h.release - fa) / L_[j].omega / relax_dt_);
-        if (share > worst) worst = share, gap = h.release - fa, layer = j;
+      for (size_t k = 0; k < held_[j].size(); ++k) {
+        const HeldLaunch& h = held_[j][k];
+        // over its own segment the rules take min(layer's angle there, its release)
+        const double fk = std::min(rel_seg_[static_cast<size_t>(j) * seg_.size() + k], h.release);
+        if (!h.held || !h.released || !(h.release > fk)) continue;
+        const double share = std::min(1.0, (h.release - fk) / L_[j].omega / relax_dt_);
+        if (share > worst) worst = share, gap = h.release - fk, layer = j;
       }
     }
     if (worst >= kHeldWindowNoteShare)

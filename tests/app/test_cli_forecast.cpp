@@ -172,6 +172,37 @@ TEST_CASE("an explicit method's step longer than a tenth of the life carries a c
   CHECK(explicit_step_caveat(spec, 10.0, f).empty());
 }
 
+TEST_CASE("a hi-lo forecast by the layer model says the charge on worn hi-lo rings is not reliable", "[app][cli][forecast]") {
+  // docs/models/layer-worn.md, "Hi-lo liners": the layer model's charge over
+  // worn low lifters can slump where the DEM's stays; the note names it and
+  // the way out, and it goes with the results (JSON, forecast.h5)
+  const fs::path dir = temp_dir("fc_hilo");
+  std::string t = fast_qiu("max_operating_hours = 200\n");
+  t = std::regex_replace(t, std::regex("\\[liner\\]\n"),
+                         "[liner]\npattern = \"hi-lo\"\nlow_lifter_height_m = 0.125\nlow_lifter_top_width_m = 0.15\n");
+  write_file(dir / "hilo.toml", t);
+  write_file(dir / "uniform.toml", fast_qiu("max_operating_hours = 200\n"));
+  for (const char* which : {"hilo", "uniform"}) {
+    const RunResult r = run_linerlife("forecast " + (dir / (std::string(which) + ".toml")).string() + " --json --out " +
+                                      (dir / which).string());
+    INFO(which << ": " << r.err);
+    REQUIRE(r.code == 0);
+    int hilo = 0;
+    const JsonValue j = parse_json(r.out);
+    for (const auto& c : j["caveats"].items())
+      if (c["text"].str().find("a hi-lo liner:") != std::string::npos) {
+        ++hilo;
+        CHECK_THAT(c["text"].str(), Catch::Contains("not reliable") && Catch::Contains("charge = \"dem\"") &&
+                                        Catch::Contains("layer-worn.md"));
+        CHECK(r.err.find(c["text"].str()) != std::string::npos);
+        CHECK_THAT(H5Reader((dir / which / "forecast.h5").string()).attr_string("/forecast", "caveat"),
+                   Catch::Contains("a hi-lo liner:"));
+      }
+    CHECK(hilo == (std::string(which) == "hilo" ? 1 : 0));
+  }
+  fs::remove_all(dir);
+}
+
 TEST_CASE("the layer model's power history carries a caveat when it departs from the new liner's by more than 15 %",
           "[app][forecast]") {
   const std::vector<double> h{0, 1000, 2000, 3000};
