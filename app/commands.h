@@ -155,10 +155,10 @@ constexpr double kDenseProfileCaveatSpacingM = 1e-3;
 std::string dense_profile_caveat(const LinerDesign& liner);
 /// A caveat on a forecast of a hi-lo liner by the layer model, or "" for any
 /// other. The layer model's charge on worn hi-lo rings is checked against the
-/// 2D DEM on one forecast of the bundled mill with 0.125 m low lifters only
-/// (docs/models/layer-worn.md, "Hi-lo liners"): as the low lifters wear below
-/// one ball the charge over them can slump, and the power and the liner loads
-/// with it, where the DEM's charge stays in place.
+/// 2D DEM only on the bundled mill with 0.125 m low lifters (docs/models/
+/// layer-worn.md, "Hi-lo liners"): its power overshoots over mid-life, and as
+/// the low lifters wear below one ball the charge over them can slump, where
+/// the DEM's charge stays in place.
 std::string hilo_caveat(const std::string& charge_model, const LinerDesign& liner);
 /// A caveat on a forecast by an explicit method (amplify, euler) whose step
 /// is longer than kExplicitStepCaveatFraction of the life it forecast, or ""

@@ -235,11 +235,11 @@ std::string hilo_caveat(const std::string& charge_model, const LinerDesign& line
   // The figures: docs/models/layer-worn.md, "Hi-lo liners" (bench_layer_worn
   // --rings 1, and --model dem, on the rings of the bundled mill's hi-lo
   // forecasts, 2026-12-06).
-  return "a hi-lo liner: the layer model's charge on worn hi-lo rings is checked against the 2D DEM on one forecast "
-         "of the bundled mill (0.125 m low lifters) only, and it is not reliable there: as the low lifters wear to "
-         "under one ball the charge over them can slump (at the end of that life 3,427 kW where the DEM's stays at "
-         "6,291 kW, with the liner loads that go with it; docs/models/layer-worn.md, \"Hi-lo liners\"). Read the "
-         "relining date as indicative, or drive the forecast with [model] charge = \"dem\"";
+  return "a hi-lo liner: the layer model's charge on worn hi-lo rings is checked against the 2D DEM only on the "
+         "bundled mill with 0.125 m low lifters, and it is not reliable there: its power rises 8-20 % over mid-life "
+         "where the DEM's rises 2-3 %, and as the low lifters wear to under one ball the charge over them can slump "
+         "(on one such ring 3,429 kW where the DEM's stays at 6,291 kW; docs/models/layer-worn.md, \"Hi-lo "
+         "liners\"). Read the relining date as indicative, or drive the forecast with [model] charge = \"dem\"";
 }
 
 std::string explicit_step_caveat(const ForecastSpec& spec, double speed_rpm, const ForecastResult& f) {

@@ -1719,6 +1719,14 @@ void LayerSim::check_flights(double t1) {
       const DepartureEvent& e = dep_events_[ev.index()];
       const int id = occ(e.j, e.s);
       if (id < 0) continue;
+      // An element placed over a lifter after its slot crossed the lifter's
+      // release is part of the bed there, not of the pocket (the rule of
+      // check_departure()): it leaves at the layer's own angle over the
+      // segment, departures()' second event, where that is later.
+      if (e.seg >= 0 && elem_t_slot_[id] > e.t) {
+        const double rb = rel_seg_[static_cast<size_t>(e.j) * seg_.size() + static_cast<size_t>(e.seg)];
+        if (std::isfinite(rb) && rb > held_[e.j][e.seg].release) continue;
+      }
       // an element placed there after the slot crossed leaves when it came
       launch(e.j, e.s, std::max(e.t, elem_t_slot_[id]), e.seg);  // schedules its flight
       continue;
