@@ -512,6 +512,15 @@ class LayerSim {
   // differ (a hi-lo ring), else sin_fa_ alone is used
   std::vector<double> sin_fa_seg_;
   std::vector<double> rel_seg_;  // [rad] layer j's own flight angle over segment k, [j * segments + k] (setup_flight_angles())
+  double rel_seg(int j, int k) const { return rel_seg_[static_cast<size_t>(j) * seg_.size() + static_cast<size_t>(k)]; }
+  /// Where a ball that came into layer j over lifter seg after the lifter's
+  /// release leaves (the layer's own angle there, docs/models/layer.md §3
+  /// "Per segment"), or +inf where that is not later than the release.
+  double late_ball_angle(int j, int seg) const {
+    const HeldLaunch& h = held_[static_cast<size_t>(j)][static_cast<size_t>(seg)];
+    const double rb = rel_seg(j, seg);
+    return h.held && h.released && std::isfinite(rb) && rb > h.release ? rb : kInf;
+  }
   std::vector<char> fa_by_segment_;
   double tan_g_ = 0;                        // tan of the angle of repose
   std::vector<int> elem_layer_, elem_slot_; // -1 when flying
@@ -1416,8 +1425,7 @@ void LayerSim::departures(double t0, double t1) {
         // there (rel_seg_); the release study's elements outside every
         // pocket (seg = -1) the layer's smallest, as before
         const double rel = h.held ? (h.released ? h.release : kInf)
-                                  : seg >= 0 ? rel_seg_[static_cast<size_t>(j) * seg_.size() + static_cast<size_t>(seg)]
-                                             : l.release;
+                                  : seg >= 0 ? rel_seg(j, seg) : l.release;
         if (std::isfinite(rel)) {
           const double w = remainder_2pi(rel - a0);
           if (w > -wdt && w <= wdt) dep_events_.push_back({t0 + w / l.omega, j, si, h.held ? seg : -1});
@@ -1426,9 +1434,9 @@ void LayerSim::departures(double t0, double t1) {
         // (fell or landed there): part of the bed, it leaves at the layer's own
         // angle there (docs/models/layer.md §3, "Per segment", rule 4 of
         // layer-worn.md "Hi-lo liners")
-        if (h.held && h.released && seg >= 0) {
-          const double rb = rel_seg_[static_cast<size_t>(j) * seg_.size() + static_cast<size_t>(seg)];
-          if (std::isfinite(rb) && rb > h.release) {
+        if (seg >= 0) {
+          const double rb = late_ball_angle(j, seg);
+          if (std::isfinite(rb)) {
             const double w = remainder_2pi(rb - a0);
             if (w > -wdt && w <= wdt) dep_events_.push_back({t0 + w / l.omega, j, si, -1});
           }
@@ -1723,10 +1731,7 @@ void LayerSim::check_flights(double t1) {
       // release is part of the bed there, not of the pocket (the rule of
       // check_departure()): it leaves at the layer's own angle over the
       // segment, departures()' second event, where that is later.
-      if (e.seg >= 0 && elem_t_slot_[id] > e.t) {
-        const double rb = rel_seg_[static_cast<size_t>(e.j) * seg_.size() + static_cast<size_t>(e.seg)];
-        if (std::isfinite(rb) && rb > held_[e.j][e.seg].release) continue;
-      }
+      if (e.seg >= 0 && elem_t_slot_[id] > e.t && std::isfinite(late_ball_angle(e.j, e.seg))) continue;
       // an element placed there after the slot crossed leaves when it came
       launch(e.j, e.s, std::max(e.t, elem_t_slot_[id]), e.seg);  // schedules its flight
       continue;
@@ -2405,7 +2410,7 @@ void LayerSim::check_departure(int j, int s, double tau, double sn) {
     // which the bed over the pockets drained: layer-worn.md, "Hi-lo liners")
     double c, snd;
     slot_dir(j, s, tau, c, snd);
-    const double rb = rel_seg_[static_cast<size_t>(j) * seg_.size() + static_cast<size_t>(segment_at(c, snd, tau))];
+    const double rb = rel_seg(j, segment_at(c, snd, tau));
     if (!(std::isfinite(rb) && sn > std::sin(rb) + 1e-12)) return;
   }
   launch(j, s, tau, -1, true);
@@ -2978,7 +2983,7 @@ ChargeResult LayerSim::run() {
       for (size_t k = 0; k < held_[j].size(); ++k) {
         const HeldLaunch& h = held_[j][k];
         // over its own segment the rules take min(layer's angle there, its release)
-        const double fk = std::min(rel_seg_[static_cast<size_t>(j) * seg_.size() + k], h.release);
+        const double fk = std::min(rel_seg(j, static_cast<int>(k)), h.release);
         if (!h.held || !h.released || !(h.release > fk)) continue;
         const double share = std::min(1.0, (h.release - fk) / L_[j].omega / relax_dt_);
         if (share > worst) worst = share, gap = h.release - fk, layer = j;
