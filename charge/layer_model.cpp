@@ -554,6 +554,8 @@ class LayerSim {
   bool averaging_ = false;
   double avg_time_ = 0;
   double energy_ = 0;                       // [J/m] work done on departing elements
+  double arm_time_ = 0;                     // [kg m s / m] time integral of sum m x over the elements in slots (power)
+  double arm_fly_time_ = 0;                 // [kg m s / m] the same over the flying ones, sampled (sample())
   std::vector<double> layer_count_acc_;     // element-seconds per layer
   std::vector<long long> traj_count_;       // trajectory flights per launch layer
   long long n_traj_flights_ = 0;
@@ -1302,6 +1304,9 @@ void LayerSim::leave_slot(int id, int j, int s, double tau) {
   const double a0 = phase0_[j] + l.omega * ta + s * l.delta, a1 = phase0_[j] + l.omega * tb + s * l.delta;
   const double spr = 1.0 / l.omega;
   occupancy_->add_arc(j, a0, a1, spr, d_ * d_, m_);  // canonical frame
+  // its torque arm over the time it sat here (the power, eq. 4.3): the
+  // integral of x = r cos(a0 + omega t) dt, exactly
+  arm_time_ += m_ * l.r * (std::sin(a1) - std::sin(a0)) * spr;
 }
 
 // ============================================================================
@@ -2816,6 +2821,7 @@ void LayerSim::sample(double tau, double w) {
     const V q = flight_position(f, tau);  // canonical frame (the indicators are mirrored at the end)
     const int j = occupancy_->ring(q.norm());
     occupancy_->add_to_bin(j, occupancy_->angular_bin(j, wrap2pi(fast_atan2(q.y(), q.x()))), cell_w, mass_w);
+    arm_fly_time_ += mass_w * q.x();  // the power's torque arm (results: eq. 4.3 and the momentum balance)
     if (tau >= f.t0) airborne_w_ += w;  // airborne: flying, not still sliding along a lifter face (lifter_slide)
   }
   occupancy_->add_time(w);
@@ -3193,23 +3199,23 @@ ChargeResult LayerSim::run() {
         pool_w_per_m += omega_ * kGravity * rho_pulp_ * o.bin_area(j) * rc * std::cos(tc);
       }
   }
-  // Net power (thesis eq. 4.1): the charge by its torque arm (eq. 4.3), as the
-  // thesis' simulator, plus the slurry pool (eq. 4.4), from the time-averaged
-  // mass of the en-masse bins at their centres. The second figure is the rate
-  // of lift and kinetic energy given to the elements that leave the charge:
+  // Net power (thesis eq. 4.1): the charge by its torque arm, eq. 4.3 (Radziszewski
+  // 1999: P = omega g sum m x), plus the slurry pool (eq. 4.4). The sum runs over
+  // every element, the flying ones included: in a steady state the charge's
+  // angular momentum does not change on average, so the mean torque of the liner
+  // on it balances the mean torque of gravity on all of it (a flight's angular
+  // momentum, changed by gravity on the way, reaches the liner through the bed
+  // when it lands). The thesis' simulator counts only the elements en masse. The
+  // elements in slots are integrated exactly as they leave them (leave_slot()),
+  // the flying ones sampled every 2 deg (sample()). Until 2026-12-06 the sum ran
+  // over the time-averaged mass of the occupancy grid's en-masse bins (at least
+  // half the packed level), which counted the flights passing through dense
+  // bins and dropped thin ones, among them the partial layer at r_i while under
+  // half its cells were open: the power jumped by 3.9 % as r_i crossed that
+  // layer's middle (docs/models/layer.md §8). The second figure is the rate of
+  // lift and kinetic energy given to the elements that leave the charge:
   // Morrell's energy reading of his C-model (reference §1).
-  double arm_w_per_m = 0;
-  {
-    const ChargeOccupancy& o = *occupancy_;
-    double arm = 0;  // [kg m / m] sum m x of the en-masse charge, physical frame
-    for (int j = 0; j < o.n_rings(); ++j)
-      for (int i = 0; i < o.n_angular(j); ++i) {
-        if (o.occupancy(j, i) < oc.threshold) continue;
-        const double tc = (i + 0.5) * kTwoPi / o.n_angular(j);
-        arm += o.mass(j, i) * o.ring_mid_radius(j) * std::cos(tc);
-      }
-    arm_w_per_m = omega_ * kGravity * arm;
-  }
+  const double arm_w_per_m = avg_time_ > 0 ? omega_ * kGravity * (arm_time_ + arm_fly_time_) / avg_time_ : 0.0;
   const double net_w_per_m = arm_w_per_m + pool_w_per_m;
   I.net_power_w_per_m = net_w_per_m;
   I.net_power_kw = net_w_per_m * L / 1000.0;

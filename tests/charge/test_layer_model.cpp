@@ -636,6 +636,33 @@ TEST_CASE("version 1.2 with its own airborne share in eq. 4.14 puts the toe near
   CHECK(std::abs(b.indicators.toe_deg - toe_morrell) < std::abs(a.indicators.toe_deg - toe_morrell) - 10.0);
 }
 
+TEST_CASE("the layer model's power does not jump as r_i crosses the middle of the layer it cuts", "[charge][layer]") {
+  // docs/models/layer.md §8: version 1.2 opens the layer the circle r_i cuts
+  // with the share f of its cells; where f passes one half the charge hardly
+  // moves. The power summed over the occupancy grid's en-masse bins (until
+  // 2026-12-06) left that layer out while f < 1/2 and took it in above: on
+  // the new Qiu liner, r_i 3.715 -> 3.713 m (the share of eq. 4.14, 0.837 ->
+  // 0.838), 6,249 -> 6,498 kW (+4.0 %) here, toe and centre of mass within
+  // 0.4 deg. The power of every element's torque arm: 6,603 -> 6,634 kW
+  // (+0.5 %).
+  const Config c = mill_config("qiu2001_sag.toml");
+  const LinerSurface s = build_liner_surface(c.mill, c.liner);
+  ChargeInput in = charge_input(c, s, 10, 1);
+  in.model.inner_radius_beta = 0.837;
+  const Indicators a = run_model("layer", in).indicators;
+  in.model.inner_radius_beta = 0.838;
+  const Indicators b = run_model("layer", in).indicators;
+  // the cut layer's middle lies between the two r_i (the layers are one ball
+  // deep, counted in from the effective radius)
+  const double d = c.charge.ball_diameter_m, R = 0.5 * a.diameter_eff_m;
+  const double fa = (R - a.inner_radius_m) / d, fb = (R - b.inner_radius_m) / d;
+  INFO("bed depth " << fa << " -> " << fb << " layers; power " << a.net_power_kw << " -> " << b.net_power_kw
+                    << " kW, toe " << a.toe_deg << " -> " << b.toe_deg);
+  REQUIRE(std::floor(fa - 0.5) < std::floor(fb - 0.5));
+  CHECK(angle_diff(a.toe_deg, b.toe_deg) < 1.0);
+  CHECK(b.net_power_kw == Approx(a.net_power_kw).epsilon(0.015));
+}
+
 namespace {
 
 struct LoadPlace {
