@@ -119,9 +119,10 @@ Json drive_notes_json(const std::vector<DriveNote>& notes);
 
 /// A caveat on a forecast's net power history, or "" if none is due. The
 /// layer model's net power on worn liners is checked on the bundled Qiu mill
-/// only (docs/models/layer-worn.md, "The bed's support"): within +7.0 % over
-/// its worn profiles where the 2D DEM's is within +3.4 % (it rose by up to
-/// +57 % before 2026-12-06; +6.6 % before the pocket rule of "Hi-lo liners"). When the layer model's power departs from its
+/// only (docs/models/layer-worn.md, "The power's sum"): within +10.2 % over
+/// the bundled forecast's worn profiles where the 2D DEM's is within +3.4 %
+/// (it rose by up to +57 % before the bed's support rule of 2026-12-06, and
+/// by +15.7 % with the en-masse bins' power sum before 2e69c47). When the layer model's power departs from its
 /// new-liner value by more than kWornPowerCaveatFraction anywhere in the
 /// history, the caveat says by how much and where the DEM stands, so that the
 /// history is not read as the motor's load.
@@ -131,12 +132,12 @@ std::string worn_power_caveat(const std::string& charge_model, const std::vector
 /// The same from a forecast's history.
 std::string worn_power_caveat(const std::string& charge_model, const std::vector<LifeRecord>& history);
 /// The worn-power caveat's explanation, after its figures (the figures:
-/// docs/models/layer-worn.md, "The bed's support": bench_layer_worn, and
-/// --model dem, on the bundled forecast's profiles at 0, 3000, 6000 and
-/// 7355 h, 20 revolutions each).
+/// docs/models/layer-worn.md, "The bed's support" and "The power's sum":
+/// bench_layer_worn on the bundled forecast's 68 profiles, and --model dem on
+/// those at 0, 3000, 4000, 6000 and 7355 h, 20 revolutions each).
 inline constexpr const char* kWornPowerCaveatWhy =
     "its power on worn liners is checked only on the bundled Qiu mill's worn profiles, where at 20 revolutions a "
-    "profile the 2D DEM's changes by at most +3.4 % and the layer model's by at most +7.0 %; a forecast's drives, "
+    "profile the 2D DEM's changes by at most +3.4 % and the layer model's by up to +10 %; a forecast's drives, "
     "of fewer revolutions, scatter further (docs/models/layer-worn.md). Read the power history as the layer model's, "
     "not as the mill motor's load (the liner loads come from the same charge)";
 /// compare's notes on its cases, one line per caveat ("linerlife: note:

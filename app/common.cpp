@@ -180,8 +180,7 @@ std::string worn_power_caveat(const std::string& charge_model, const std::vector
   }
   if (std::abs(dev) <= kWornPowerCaveatFraction) return "";
   // The figures of kWornPowerCaveatWhy: docs/models/layer-worn.md, "The
-  // bed's support" (bench_layer_worn, and --model dem, on the bundled
-  // forecast's profiles at 0, 3000, 6000 and 7355 h, 20 revolutions each).
+  // bed's support" and "The power's sum" (commands.h).
   return fmt::format("the layer model's net power moves by {:+.0f} % over this life ({:.0f} kW new, {:.0f} kW at {:.0f} h); {}",
                      100.0 * dev, p0, net_power_kw[worst], hours[worst], kWornPowerCaveatWhy);
 }
