@@ -75,8 +75,6 @@ class ChargeOccupancy {
   /// angular bin i from 0 rad (bin width 2 pi / n_angular(j)).
   double occupancy(int j, int i) const;
   double bin_area(int j) const { return area_[j]; }
-  /// Time-averaged mass [kg per m] in bin (j, i).
-  double mass(int j, int i) const { return time_s_ > 0 ? acc_m_[index(j, i)] / time_s_ : 0.0; }
   double ring_mid_radius(int j) const { return R_ - (j + 0.5) * d_; }
   /// Angular bin of ring j holding angle theta [rad] (inline, floor without
   /// the libm call: sample() asks for one per flight).

@@ -179,7 +179,9 @@ TEST_CASE("layer model: on a worn hi-lo liner the charge stays where the DEM's d
   // 25 % on power: the layer model overshoots on worn hi-lo rings (this ring
   // 7,245-7,779 kW over 10-40 revolutions and 1-3 settling ones, +14 to +22 %;
   // 7,370 kW, toe 232.1 deg, centre of mass 310.0 deg as run here; the
-  // forecast's own ring 6,625 kW), an open defect the forecast's caveat names;
+  // forecast's own ring 6,625 kW; all with the en-masse bins' power sum of
+  // the time: here 7,569 kW, +19 %, with every element's torque arm since
+  // 2e69c47, docs/models/layer.md §8), an open defect the forecast's caveat names;
   // the bound is for the collapse, -63 %. Toe and centre of mass: the collapse
   // moved them 29 and 24 deg.
   CHECK(w.net_power_kw == Approx(6355.0).epsilon(0.25));
