@@ -621,7 +621,7 @@ TEST_CASE("compare of lifter designs by the layer model says its ranking is to b
   CHECK(design_ranking_caveat({&base}).empty());
   // the thesis' release names the slide launch as the ball mill's better screen;
   // with the slide on in every layer case, the note is about the slide
-  CHECK(c.find("lifter_slide = \"on\" 13 of 15") != std::string::npos);
+  CHECK(c.find("lifter_slide = \"on\" 11 of 15") != std::string::npos);
   Config slide = base, slide_taller = taller;
   slide.model.lifter_slide = slide_taller.model.lifter_slide = true;
   const std::string s = design_ranking_caveat({&slide, &slide_taller});
