@@ -177,6 +177,9 @@ class LayerSim {
   /// direction tables (left out before the cell counts are final).
   void layout_slots(bool tables);
   void setup_flight_angles();
+  /// Layer j's balls a lifter lets go where they cannot be thrown, caught by
+  /// the lifter behind it (setup_flight_angles(); a hi-lo ring's low lifters).
+  void caught_behind(int j);
   /// Notes for lifters lower than kLowLifterDiameters media diameters and
   /// rows further apart than kWideRowsDiameters (docs/models/layer.md).
   void note_unchecked_lifters();
@@ -1206,6 +1209,8 @@ void LayerSim::setup_flight_angles() {
         l.rel_min = std::min(l.rel_min, h.release);
         l.rel_max = std::max(l.rel_max, h.release);
       }
+      // a pocket its lifter cannot throw goes with the one behind (a hi-lo ring)
+      if (!in_.model.lifter_slide) caught_behind(j);
     }
     // Unheld layers (and segments without a lifter at this layer): the layer
     // leaves where an element on the radial "face" of the one behind it can
@@ -1249,6 +1254,58 @@ void LayerSim::setup_flight_angles() {
     }
     prev_bed = std::min(own, prev_bed);
   }
+}
+
+void LayerSim::caught_behind(int j) {
+  // Caught behind (docs/models/layer-worn.md, "Caught behind"; layer.md §3).
+  // Without the slide a released ball flies from its place in the pocket,
+  // radius r0, with the lifter's speed omega r0. Below Davis' angle, where
+  // gravity's inward part g sin(theta) is less than the centripetal
+  // omega^2 r0 (thesis eq. 4.5 with mu = 0 and beta = 0), that parabola
+  // curves less than the circle: it runs straight back into what carries
+  // the ball, which still presses on it. Such a ball is not thrown; its
+  // lifter no longer holds it, and it stays in the bed on the shell, pushed
+  // along by the balls behind it down to the face of the lifter behind
+  // (k - 1, against the rotation, as in pocket_lifter()). Where that lifter
+  // lets layer j go later, the ball goes with its pocket and leaves at its
+  // release. On a ring of alike lifters the lifter behind lets go where this
+  // one does (to kAlikeRad), so nothing changes there; on a hi-lo ring the
+  // worn low lifters' pockets go with the high lifters' (the high ones',
+  // worn first in a blend, with the low ones'). Before (the bundled mill's
+  // hi-lo forecast, 2026-12-06): a low lifter worn to 0.084 m let its
+  // pocket go at McIvor's -0.26 deg; its balls hit the liner at once and
+  // were put on the bed there or walked to the toe, and the power rose
+  // +24 % over mid-life, then fell 7,645 -> 5,321 kW in 100 h of wear.
+  const int S = static_cast<int>(seg_.size());
+  const double R = canon_.surface.shell_radius_m;
+  auto& row = held_[static_cast<size_t>(j)];
+  auto thrown = [&](int k, double release) {
+    const double r0 = R - seg_[k].plate_ref_thickness_m - (j + 0.5) * d_;
+    const double s_clear = omega_ * omega_ * r0 / kGravity;
+    return !(s_clear < 1.0) || std::sin(release) >= s_clear;
+  };
+  std::vector<double> release(static_cast<size_t>(S), kInf);
+  for (int k = 0; k < S; ++k)
+    if (row[k].held && row[k].released) release[k] = row[k].release;
+  bool changed = false;
+  for (int k = 0; k < S; ++k) {
+    HeldLaunch& h = row[k];
+    if (!(h.held && h.released) || thrown(k, h.release)) continue;
+    const int kb = (k + S - 1) % S;
+    const double rb = release[kb];
+    if (!std::isfinite(rb) || !(rb > h.release + kAlikeRad)) continue;
+    h.release = rb;
+    changed = true;
+  }
+  if (!changed) return;
+  Layer& l = L_[j];
+  l.rel_min = kInf;
+  l.rel_max = -kInf;
+  for (int k = 0; k < S; ++k)
+    if (row[k].held && row[k].released) {
+      l.rel_min = std::min(l.rel_min, row[k].release);
+      l.rel_max = std::max(l.rel_max, row[k].release);
+    }
 }
 
 void LayerSim::setup_initial_fill() {
