@@ -193,8 +193,8 @@ TEST_CASE("a hi-lo forecast by the layer model says how far its charge on worn h
     for (const auto& c : j["caveats"].items())
       if (c["text"].str().find("a hi-lo liner:") != std::string::npos) {
         ++hilo;
-        CHECK_THAT(c["text"].str(), Catch::Contains("checked against the 2D DEM only") && Catch::Contains("charge = \"dem\"") &&
-                                        Catch::Contains("layer-worn.md"));
+        CHECK_THAT(c["text"].str(), Catch::Contains("checked against the 2D DEM only") &&
+                                        Catch::Contains("charge = \"dem\"") && Catch::Contains("layer-worn.md"));
         CHECK(r.err.find(c["text"].str()) != std::string::npos);
         CHECK_THAT(H5Reader((dir / which / "forecast.h5").string()).attr_string("/forecast", "caveat"),
                    Catch::Contains("a hi-lo liner:"));

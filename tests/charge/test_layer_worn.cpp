@@ -107,10 +107,12 @@ TEST_CASE("layer model: a hi-lo ring's indicators change continuously as its low
   // The bundled mill as a hi-lo liner: the high lifters as worn at 4,244 h
   // (tests/charge/data/qiu_hilo_4244h_high.csv), the low ones blended from
   // new (0.125 m) to worn at 4,244 h (0.079 m, 0.6 ball), over which
-  // McIvor's angle for their pocket falls from 43 to -5 deg, far below
-  // Davis' angle (about 37 deg): they cannot throw it, and their balls roll
-  // back into the high lifter's pocket (LayerSim::caught_behind(),
-  // docs/models/layer-worn.md, "Caught behind"). Before that rule the
+  // McIvor's angle for their pocket falls from 43 to -5 deg, below Davis'
+  // angle (about 37.5 deg) from the third point: they cannot throw it, and
+  // their balls go with the pocket of the high lifter behind them
+  // (LayerSim::caught_behind(), docs/models/layer-worn.md, "Caught behind");
+  // the worn high lifters' pockets (McIvor's 26 deg) go with the new low
+  // lifters' until then. Before that rule the
   // balls were thrown into the liner: the power rose and then, where
   // McIvor's angle passed 0 deg, fell by 30 % in one step of wear (on the
   // bundled hi-lo forecast's rings 7,645 -> 5,321 kW between 3,700 and
@@ -257,8 +259,9 @@ TEST_CASE("layer model: on a worn hi-lo liner the charge stays where the DEM's d
   // the low lifters' McIvor angle fell below 0 deg (7,645 -> 5,321 kW in
   // 100 h). Power to 10 % of the DEM's; the toe against the layer model's
   // own on the new hi-lo ring, 213.2 deg, already 19 deg short of the DEM's
-  // 232.4 there (the new liner's toe, layer-worn.md, "The bed's support"): the DEM's moves -2.4 deg,
-  // and the collapse moved it -12 deg, the overshoot +19 deg.
+  // 232.4 there (the new liner's toe, layer-worn.md, "The bed's support"):
+  // the DEM's moves -2.4 deg, the collapse moved it -12 deg, the overshoot
+  // +19 deg.
   CHECK(w.net_power_kw == Approx(6355.0).epsilon(0.10));
   CHECK(angle_diff(w.toe_deg, n.toe_deg) < 6.0);
   CHECK(angle_diff(w.com_angle_deg, 305.2) < 8.0);
