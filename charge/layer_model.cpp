@@ -126,6 +126,7 @@ struct HeldLaunch {
   double dtheta = 0;       // [rad] launch angle - release angle
   double radius = 0;       // [m] launch radius
   double vr = 0, vt = 0;   // [m/s] launch velocity, polar components
+  double r0 = 0;           // [m] radius of the ball's centre in the pocket
 };
 
 /// An element no lifter holds (the release study's plate elements, departures()).
@@ -1206,6 +1207,7 @@ void LayerSim::setup_flight_angles() {
         h.radius = ll.launch_radius_m;
         h.vr = ll.v_radial_m_s;
         h.vt = ll.v_tangential_m_s;
+        h.r0 = r0;
         l.rel_min = std::min(l.rel_min, h.release);
         l.rel_max = std::max(l.rel_max, h.release);
       }
@@ -1277,11 +1279,9 @@ void LayerSim::caught_behind(int j) {
   // were put on the bed there or walked to the toe, and the power rose
   // +24 % over mid-life, then fell 7,645 -> 5,321 kW in 100 h of wear.
   const int S = static_cast<int>(seg_.size());
-  const double R = canon_.surface.shell_radius_m;
   auto& row = held_[static_cast<size_t>(j)];
   auto thrown = [&](int k, double release) {
-    const double r0 = R - seg_[k].plate_ref_thickness_m - (j + 0.5) * d_;
-    const double s_clear = omega_ * omega_ * r0 / kGravity;
+    const double s_clear = omega_ * omega_ * row[k].r0 / kGravity;
     return !(s_clear < 1.0) || std::sin(release) >= s_clear;
   };
   std::vector<double> release(static_cast<size_t>(S), kInf);
