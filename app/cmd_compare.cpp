@@ -42,7 +42,7 @@ struct Case {
   std::vector<std::pair<std::string, std::string>> varied{};  // --vary: (key, value) in --vary order
   ForecastResult result;
   double mean_power_kw = 0, final_power_kw = 0, mean_direct_impacts = 0;
-  std::vector<std::string> caveats{};  // on the power history (worn_power_caveat()), a hi-lo liner (hilo_caveat()), the method's step (explicit_step_caveat()), the drives (few_drives_caveat())
+  std::vector<std::string> caveats{};  // on the power history (worn_power_caveat()), a hi-lo liner (hilo_caveat()), a lifter worn below whole media diameters (one_ball_caveat()), the method's step (explicit_step_caveat()), the drives (few_drives_caveat())
 };
 
 /// Time average of a history column over the life (trapezoids).
@@ -286,6 +286,7 @@ int run_compare(const CompareOptions& o) {
     k.final_power_kw = k.result.history.back().net_power_kw;
     k.mean_direct_impacts = time_mean(k.result.history, &LifeRecord::direct_impact_fraction);
     k.caveats = {worn_power_caveat(k.config.model.charge, k.result.history), hilo_caveat(k.config.model.charge, k.config.liner),
+                 one_ball_caveat(k.config.model.charge, k.config.charge.ball_diameter_m, k.result.history),
                  explicit_step_caveat(k.config.forecast, k.config.mill.speed_rpm, k.result),
                  few_drives_caveat(k.config.forecast, k.result)};
   }

@@ -166,6 +166,7 @@ int run_forecast_command(const ForecastOptions& o) {
   const LifeRecord& last = f.history.back();
   const std::vector<std::string> caveats{worn_power_caveat(c.model.charge, f.history), dense_profile_caveat(c.liner),
                                          hilo_caveat(c.model.charge, c.liner),
+                                         one_ball_caveat(c.model.charge, c.charge.ball_diameter_m, f.history),
                                          explicit_step_caveat(c.forecast, c.mill.speed_rpm, f),
                                          few_drives_caveat(c.forecast, f)};
   const std::string caveat = caveat_lines(caveats);  // as forecast.h5 keeps them

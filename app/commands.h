@@ -157,10 +157,19 @@ std::string dense_profile_caveat(const LinerDesign& liner);
 /// A caveat on a forecast of a hi-lo liner by the layer model, or "" for any
 /// other. The layer model's charge on worn hi-lo rings is checked against the
 /// 2D DEM only on the bundled mill with 0.125 m low lifters (docs/models/
-/// layer-worn.md, "Hi-lo liners"): its power overshoots over mid-life, and as
-/// the low lifters wear below one ball the charge over them can slump, where
-/// the DEM's charge stays in place.
+/// layer-worn.md, "Caught behind"): there it stays within 3.5 % of the DEM's
+/// power, but the forecast relines 32 % before a DEM-driven one.
 std::string hilo_caveat(const std::string& charge_model, const LinerDesign& liner);
+/// A caveat on a forecast by the layer model whose (design-0) lifter wore
+/// below a whole number k >= 1 of media diameters, or "" if it did not: there
+/// the model's lifter stops holding a layer of balls (layer j is held while
+/// j d < h), and its charge changes in one step where the 2D DEM's power stays
+/// flat (docs/models/layer-worn.md, "One ball's height"). Names the first such
+/// height and the time it was passed (interpolated between history records).
+std::string one_ball_caveat(const std::string& charge_model, double ball_diameter_m, const std::vector<double>& hours,
+                            const std::vector<double>& lifter_height_m);
+std::string one_ball_caveat(const std::string& charge_model, double ball_diameter_m,
+                            const std::vector<LifeRecord>& history);
 /// A caveat on a forecast by an explicit method (amplify, euler) whose step
 /// is longer than kExplicitStepCaveatFraction of the life it forecast, or ""
 /// if none is due. Such a step wears the liner on the rates of its start (the

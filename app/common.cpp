@@ -242,6 +242,38 @@ std::string hilo_caveat(const std::string& charge_model, const LinerDesign& line
          "Read the relining date as indicative, or drive the forecast with [model] charge = \"dem\"";
 }
 
+std::string one_ball_caveat(const std::string& charge_model, double ball_diameter_m, const std::vector<double>& hours,
+                            const std::vector<double>& lifter_height_m) {
+  const double d = ball_diameter_m;
+  if (charge_model != "layer" || !(d > 0) || hours.size() != lifter_height_m.size()) return "";
+  // the layers a lifter of height h holds: max(1, ceil(h / d)), as
+  // LayerSim::setup_flight_angles() counts them (its 1e-9 included)
+  auto held = [&](double h) { return std::max(1.0, std::ceil(h / d - 1e-9)); };
+  for (size_t i = 1; i < hours.size(); ++i) {
+    const double h0 = lifter_height_m[i - 1], h1 = lifter_height_m[i];
+    if (!std::isfinite(h0) || !std::isfinite(h1) || !(held(h1) < held(h0))) continue;
+    const double k = held(h0) - 1.0;  // the multiple of d passed first
+    const double at = hours[i - 1] + (hours[i] - hours[i - 1]) * std::clamp((h0 - k * d) / (h0 - h1), 0.0, 1.0);
+    // The figures: docs/models/layer-worn.md, "One ball's height" (linerlife
+    // charge on the bundled mill with 45 deg faces, layer model and DEM, 2026-12-07).
+    return fmt::format(
+        "the lifter wore below {:g} media diameter{} ({:.3f} m) at about {:.0f} h: there the layer model's lifter stops "
+        "holding a layer of balls and its charge changes in one step (the bundled mill with 45 deg faces: -10 % of "
+        "power and -13.5 deg of shoulder within 0.2 mm of lifter height), where the 2D DEM's power stays within "
+        "0.5 % (docs/models/layer-worn.md, \"One ball's height\"). Read the power history and the wear rates from "
+        "there on with care, or check that part of the life with [model] charge = \"dem\"",
+        k, k > 1 ? "s" : "", k * d, at);
+  }
+  return "";
+}
+
+std::string one_ball_caveat(const std::string& charge_model, double ball_diameter_m,
+                            const std::vector<LifeRecord>& history) {
+  std::vector<double> hours, h;
+  for (const LifeRecord& r : history) hours.push_back(r.hours), h.push_back(r.lifter_height_m);
+  return one_ball_caveat(charge_model, ball_diameter_m, hours, h);
+}
+
 std::string explicit_step_caveat(const ForecastSpec& spec, double speed_rpm, const ForecastResult& f) {
   if (spec.method == ForecastMethod::Ode || !(f.operating_hours > 0)) return "";
   const bool amplify = spec.method == ForecastMethod::Amplify;

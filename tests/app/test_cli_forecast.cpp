@@ -204,6 +204,62 @@ TEST_CASE("a hi-lo forecast by the layer model says how far its charge on worn h
   fs::remove_all(dir);
 }
 
+TEST_CASE("a layer forecast whose lifter wears below whole media diameters carries a caveat", "[app][forecast]") {
+  // docs/models/layer-worn.md, "One ball's height": the layer model's lifter
+  // holds layer j while j d < h, and its charge steps where h passes j d
+  const std::vector<double> t{0, 1000, 2000, 3000};
+  // 0.1 m balls: 3 layers held down to 0.2 m, passed between 1000 and 2000 h
+  const std::string c = one_ball_caveat("layer", 0.1, t, {0.25, 0.22, 0.19, 0.17});
+  CHECK_THAT(c, Catch::Contains("below 2 media diameters (0.200 m) at about 1667 h"));
+  CHECK_THAT(c, Catch::Contains("\"One ball's height\"") && Catch::Contains("charge = \"dem\""));
+  // one diameter, and the first passage only (0.3 and 0.2 m within one interval)
+  CHECK_THAT(one_ball_caveat("layer", 0.1333, t, {0.15, 0.14, 0.13, 0.12}),
+             Catch::Contains("below 1 media diameter (0.133 m) at about 1670 h"));
+  CHECK_THAT(one_ball_caveat("layer", 0.1, t, {0.35, 0.32, 0.18, 0.17}),
+             Catch::Contains("below 3 media diameters (0.300 m) at about 1143 h"));
+  // none: no whole diameter passed, below one diameter (one layer held
+  // whatever the height), a lifter that rises (the plate wearing faster),
+  // another charge model, a history without heights
+  CHECK(one_ball_caveat("layer", 0.1, t, {0.25, 0.24, 0.22, 0.205}).empty());
+  CHECK(one_ball_caveat("layer", 0.1333, t, {0.13, 0.11, 0.09, 0.07}).empty());
+  CHECK(one_ball_caveat("layer", 0.1, t, {0.19, 0.2, 0.21, 0.22}).empty());
+  CHECK(one_ball_caveat("dem", 0.1, t, {0.25, 0.22, 0.19, 0.17}).empty());
+  CHECK(one_ball_caveat("empirical", 0.1, t, {0.25, 0.22, 0.19, 0.17}).empty());
+  const double nan = std::nan("");
+  CHECK(one_ball_caveat("layer", 0.1, t, {nan, nan, nan, nan}).empty());
+  CHECK(one_ball_caveat("layer", 0.1, {0}, {0.25}).empty());
+}
+
+TEST_CASE("a forecast whose lifter wears below two media diameters says so, in the JSON, on stderr and in the file",
+          "[app][cli][forecast]") {
+  // the test mill with 0.124 m balls: its 0.25 m lifter holds three layers
+  // until it wears to 0.248 m, at about 600 h; the bundled 0.1333 m balls:
+  // two layers to 0.133 m, not reached in 800 h
+  const fs::path dir = temp_dir("fc_one_ball");
+  const std::string t = fast_qiu("max_operating_hours = 800\n");
+  REQUIRE(t.find("ball_diameter_m = 0.1333\n") != std::string::npos);
+  write_file(dir / "small.toml", std::regex_replace(t, std::regex("ball_diameter_m = 0.1333\n"), "ball_diameter_m = 0.124\n"));
+  write_file(dir / "bundled.toml", t);
+  for (const char* which : {"small", "bundled"}) {
+    const RunResult r = run_linerlife("forecast " + (dir / (std::string(which) + ".toml")).string() + " --json --out " +
+                                      (dir / which).string());
+    INFO(which << ": " << r.err);
+    REQUIRE(r.code == 0);
+    int n = 0;
+    const JsonValue j = parse_json(r.out);
+    for (const auto& c : j["caveats"].items())
+      if (c["text"].str().find("media diameter") != std::string::npos) {
+        ++n;
+        CHECK_THAT(c["text"].str(), Catch::StartsWith("the lifter wore below 2 media diameters (0.248 m) at about"));
+        CHECK(r.err.find(c["text"].str()) != std::string::npos);
+        CHECK_THAT(H5Reader((dir / which / "forecast.h5").string()).attr_string("/forecast", "caveat"),
+                   Catch::Contains("the lifter wore below 2 media diameters"));
+      }
+    CHECK(n == (std::string(which) == "small" ? 1 : 0));
+  }
+  fs::remove_all(dir);
+}
+
 TEST_CASE("the layer model's power history carries a caveat when it departs from the new liner's by more than 15 %",
           "[app][forecast]") {
   const std::vector<double> h{0, 1000, 2000, 3000};
