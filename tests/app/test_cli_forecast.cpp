@@ -48,6 +48,25 @@ bool python_charts_available() {
 
 bool is_iso_date(const std::string& s) { return std::regex_match(s, std::regex("\\d{4}-\\d{2}-\\d{2}")); }
 
+/// The caveats of `linerlife forecast FILE --json --out OUT` whose text
+/// contains `key`, each checked to be on stderr and in OUT/forecast.h5's
+/// `caveat` attribute as well (the three places a caveat goes).
+std::vector<std::string> forecast_caveats_with(const fs::path& file, const fs::path& out, const std::string& key) {
+  const RunResult r = run_linerlife("forecast " + file.string() + " --json --out " + out.string());
+  INFO(file.filename().string() << ": " << r.err);
+  REQUIRE(r.code == 0);
+  std::vector<std::string> found;
+  const JsonValue j = parse_json(r.out);
+  for (const auto& c : j["caveats"].items()) {
+    const std::string text = c["text"].str();
+    if (text.find(key) == std::string::npos) continue;
+    CHECK(r.err.find(text) != std::string::npos);
+    CHECK_THAT(H5Reader((out / "forecast.h5").string()).attr_string("/forecast", "caveat"), Catch::Contains(text));
+    found.push_back(text);
+  }
+  return found;
+}
+
 }  // namespace
 
 TEST_CASE("a forecast horizon beyond 1,000,000 calendar days gets its own date", "[app][cli][forecast]") {
@@ -184,22 +203,11 @@ TEST_CASE("a hi-lo forecast by the layer model says how far its charge on worn h
   write_file(dir / "hilo.toml", t);
   write_file(dir / "uniform.toml", fast_qiu("max_operating_hours = 200\n"));
   for (const char* which : {"hilo", "uniform"}) {
-    const RunResult r = run_linerlife("forecast " + (dir / (std::string(which) + ".toml")).string() + " --json --out " +
-                                      (dir / which).string());
-    INFO(which << ": " << r.err);
-    REQUIRE(r.code == 0);
-    int hilo = 0;
-    const JsonValue j = parse_json(r.out);
-    for (const auto& c : j["caveats"].items())
-      if (c["text"].str().find("a hi-lo liner:") != std::string::npos) {
-        ++hilo;
-        CHECK_THAT(c["text"].str(), Catch::Contains("checked against the 2D DEM only") &&
-                                        Catch::Contains("charge = \"dem\"") && Catch::Contains("layer-worn.md"));
-        CHECK(r.err.find(c["text"].str()) != std::string::npos);
-        CHECK_THAT(H5Reader((dir / which / "forecast.h5").string()).attr_string("/forecast", "caveat"),
-                   Catch::Contains("a hi-lo liner:"));
-      }
-    CHECK(hilo == (std::string(which) == "hilo" ? 1 : 0));
+    const auto found = forecast_caveats_with(dir / (std::string(which) + ".toml"), dir / which, "a hi-lo liner:");
+    CHECK(found.size() == (std::string(which) == "hilo" ? 1u : 0u));
+    for (const std::string& c : found)
+      CHECK_THAT(c, Catch::Contains("checked against the 2D DEM only") && Catch::Contains("charge = \"dem\"") &&
+                        Catch::Contains("layer-worn.md"));
   }
   fs::remove_all(dir);
 }
@@ -241,21 +249,10 @@ TEST_CASE("a forecast whose lifter wears below two media diameters says so, in t
   write_file(dir / "small.toml", std::regex_replace(t, std::regex("ball_diameter_m = 0.1333\n"), "ball_diameter_m = 0.124\n"));
   write_file(dir / "bundled.toml", t);
   for (const char* which : {"small", "bundled"}) {
-    const RunResult r = run_linerlife("forecast " + (dir / (std::string(which) + ".toml")).string() + " --json --out " +
-                                      (dir / which).string());
-    INFO(which << ": " << r.err);
-    REQUIRE(r.code == 0);
-    int n = 0;
-    const JsonValue j = parse_json(r.out);
-    for (const auto& c : j["caveats"].items())
-      if (c["text"].str().find("media diameter") != std::string::npos) {
-        ++n;
-        CHECK_THAT(c["text"].str(), Catch::StartsWith("the lifter wore below 2 media diameters (0.248 m) at about"));
-        CHECK(r.err.find(c["text"].str()) != std::string::npos);
-        CHECK_THAT(H5Reader((dir / which / "forecast.h5").string()).attr_string("/forecast", "caveat"),
-                   Catch::Contains("the lifter wore below 2 media diameters"));
-      }
-    CHECK(n == (std::string(which) == "small" ? 1 : 0));
+    const auto found = forecast_caveats_with(dir / (std::string(which) + ".toml"), dir / which, "media diameter");
+    CHECK(found.size() == (std::string(which) == "small" ? 1u : 0u));
+    for (const std::string& c : found)
+      CHECK_THAT(c, Catch::StartsWith("the lifter wore below 2 media diameters (0.248 m) at about"));
   }
   fs::remove_all(dir);
 }
