@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "app/commands.h"
+#include "charge/lifter_launch.h"
 #include "forecast/forecast.h"
 #include "forecast/parallel.h"
 #include "geometry/input_text.h"
@@ -246,13 +247,12 @@ std::string one_ball_caveat(const std::string& charge_model, double ball_diamete
                             const std::vector<double>& lifter_height_m) {
   const double d = ball_diameter_m;
   if (charge_model != "layer" || !(d > 0) || hours.size() != lifter_height_m.size()) return "";
-  // the layers a lifter of height h holds: max(1, ceil(h / d)), as
-  // LayerSim::setup_flight_angles() counts them (its 1e-9 included)
-  auto held = [&](double h) { return std::max(1.0, std::ceil(h / d - 1e-9)); };
+  // the layers the layer model's lifter holds at height h (its element one media diameter)
+  auto held = [&](double h) { return lifter_held_layers(h, d); };
   for (size_t i = 1; i < hours.size(); ++i) {
     const double h0 = lifter_height_m[i - 1], h1 = lifter_height_m[i];
     if (!std::isfinite(h0) || !std::isfinite(h1) || !(held(h1) < held(h0))) continue;
-    const double k = held(h0) - 1.0;  // the multiple of d passed first
+    const double k = held(h0) - 1;  // the multiple of d passed first
     const double at = hours[i - 1] + (hours[i] - hours[i - 1]) * std::clamp((h0 - k * d) / (h0 - h1), 0.0, 1.0);
     // The figures: docs/models/layer-worn.md, "One ball's height" (linerlife
     // charge on the bundled mill with 45 deg faces, layer model and DEM, 2026-12-07).

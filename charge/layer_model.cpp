@@ -1113,7 +1113,7 @@ void LayerSim::setup_flight_angles() {
   for (int k = 0; k < S; ++k) {
     const auto& sm = seg_[k];
     if (sm.has_lifter && std::isfinite(sm.face_angle_leading_deg))
-      n_held[k] = std::max(1, static_cast<int>(std::ceil(sm.lifter_height_m / d_ - 1e-9)));
+      n_held[k] = lifter_held_layers(sm.lifter_height_m, d_);
     n_held_layers_ = std::max(n_held_layers_, std::min(n_held[k], nl));
   }
   held_.assign(n_held_layers_, std::vector<HeldLaunch>(S));

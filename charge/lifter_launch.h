@@ -5,6 +5,8 @@
 // angle above the horizontal on the rising side (3 o'clock = 0).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace linerlife {
@@ -17,6 +19,15 @@ namespace linerlife {
 /// is the release of a ball from a smooth shell, sin(theta) = k (Davis 1919).
 /// Returns +infinity when the ball is never released (k cos(beta - psi) >= 1).
 double mcivor_flight_angle(double k, double face_angle_rad, double friction_coefficient);
+
+/// The layers of balls a lifter of height h above its plate holds in the
+/// layer model: those that still touch its face or crest, j d < h, and at
+/// least the outer one, max(1, ceil(h / d)) (docs/models/layer.md §3; the
+/// 1e-9 keeps h = j d to rounding at j). d: the element edge (one media
+/// diameter by default).
+inline int lifter_held_layers(double lifter_height_m, double element_m) {
+  return std::max(1, static_cast<int>(std::ceil(lifter_height_m / element_m - 1e-9)));
+}
 
 /// The state of a ball as it leaves a lifter face.
 struct LifterLaunch {
