@@ -98,7 +98,8 @@ std::string node_text(const toml::node& n) {
       const double x = v.get();
       ss << x;
       if (whole_float(x)) ss << ".0";
-    } else if constexpr (toml::is_value<T>) ss << v.get();
+    } else if constexpr (std::is_same_v<T, toml::value<bool>>) ss << (v.get() ? "true" : "false");  // not 1 / 0
+    else if constexpr (toml::is_value<T>) ss << v.get();
     else if constexpr (std::is_same_v<T, toml::table>) ss << "(a table)";
     else ss << "(an array)";
   });

@@ -147,11 +147,15 @@ void validate_lifter_design(const Mill& mill, int segments, const LifterDesign& 
                                  nm(name), feature, kMinElementSizeM, nm(name), 4 * kMinElementSizeM,
                                  top ? "" : fmt::format(", or {} = 0 for no lifter", nm("lifter_height_m"))));
   }
-  if (h > 0.25 * feature)
+  if (h > 0.25 * feature) {
+    // name the dimension that limits it, as written ("low_lifter_height_m"
+    // for the low lifter of a hi-lo liner), with its value
+    const char* limit = d.top_width_m <= d.lifter_height_m ? "lifter_top_width_m" : "lifter_height_m";
     throw InputError("liner.element_size_m",
-                     fmt::format("element_size_m = {} m is too coarse to resolve the lifter: it must be at most a "
-                                 "quarter of the lifter height and top width ({:.4g} m)",
-                                 h, 0.25 * feature));
+                     fmt::format("element_size_m = {} m is too coarse to resolve the {}lifter ({} = {} m): it must be "
+                                 "at most a quarter of its height and top width ({:.4g} m)",
+                                 h, written.empty() ? "" : "low ", nm(limit), feature, 0.25 * feature));
+  }
   const Trapezoid t = trapezoid(R, d, +1);
   const double lead_half = std::abs(polar_angle(t.lead_foot)), trail_half = std::abs(polar_angle(t.trail_foot));
   const double half_base = std::max(lead_half, trail_half);

@@ -165,10 +165,19 @@ DemSetup make_dem_setup(const ChargeInput& in) {
   }
   s.particles = make_particle_set(ch, spec, s.free_area, static_cast<unsigned long long>(spec.seed));
   const ParticleSet& ps = s.particles;
-  if (ps.size() < 10)
-    refuse("coarse_grain", fmt::format("coarse_grain = {} leaves {} discs; the charge needs at least 10 (lower "
-                                       "coarse_grain)",
-                                       spec.coarse_grain, ps.size()));
+  if (ps.size() < 10) {
+    if (spec.coarse_grain > 1)
+      refuse("coarse_grain", fmt::format("coarse_grain = {} leaves {} discs; the charge needs at least 10 (lower "
+                                         "coarse_grain, 1 at the least)",
+                                         spec.coarse_grain, ps.size()));
+    // one disc per medium already: the charge itself is too small for the
+    // model (a coarse_grain of 1 cannot be lowered; the sweep of 2026-12-07
+    // found the message asking for it)
+    throw InputError("charge.filling",
+                     fmt::format("filling = {} holds only {} discs in this mill (ball_diameter_m = {} m, one disc per "
+                                 "medium); the dem model needs at least 10: a larger filling, or smaller media",
+                                 ch.filling, ps.size(), ch.ball_diameter_m));
+  }
   double dmin = std::numeric_limits<double>::max(), dmax = 0, dsum = 0;
   for (double r : ps.radius_m) dmin = std::min(dmin, 2 * r), dmax = std::max(dmax, 2 * r), dsum += 2 * r;
   s.mean_diameter = dsum / ps.size();

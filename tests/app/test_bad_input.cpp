@@ -911,3 +911,60 @@ TEST_CASE("a wear law the charge model gives no loads for is refused at its line
   }
   fs::remove_all(dir);
 }
+
+// Found by the input sweep of 2026-12-07: a message that named the high
+// lifter for the low one's height, one that echoed `true` as 1, and one
+// that asked for a coarse_grain below the least allowed.
+TEST_CASE("a refusal names the value that limits it, as written", "[app][cli][input]") {
+  const fs::path dir = temp_dir("limiting_value");
+  {
+    // the low lifter of a hi-lo liner is the feature the mesh cannot resolve
+    write_file(dir / "low.toml", defaults_with("pattern = ", "pattern = \"hi-lo\"\nlow_lifter_height_m = 0.005\n"
+                                                             "low_lifter_top_width_m = 0.15"));
+    const RunResult r = run_linerlife("charge " + (dir / "low.toml").string() + " --json", 30);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK_THAT(r.err, Catch::Contains("element_size_m = 0.01 m is too coarse to resolve the low lifter "
+                                      "(low_lifter_height_m = 0.005 m)"));
+    CHECK_THAT(r.err, Catch::Contains("(0.00125 m)"));
+  }
+  {
+    // the same limit on a uniform liner names the lifter's own dimension
+    write_file(dir / "high.toml", defaults_with("lifter_height_m = ", "lifter_height_m = 0.03"));
+    const RunResult r = run_linerlife("charge " + (dir / "high.toml").string() + " --json", 30);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("too coarse to resolve the lifter (lifter_height_m = 0.03 m)"));
+  }
+  {
+    // a boolean where a number belongs is echoed as written
+    write_file(dir / "bool.toml", defaults_with("speed_rpm = ", "speed_rpm = true"));
+    const RunResult r = run_linerlife("charge " + (dir / "bool.toml").string() + " --json", 30);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("[mill] speed_rpm = true: expected a number"));
+  }
+  {
+    // a DEM charge of fewer than 10 discs: at coarse_grain 1 the filling is
+    // named (at its line), above 1 the coarse_grain
+    const std::string pilot = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/pilot_test_05.toml");
+    std::string t = std::regex_replace(pilot, std::regex("\nfilling = 0\\.3\n"), "\nfilling = 0.04\n");
+    t = std::regex_replace(t, std::regex("\nball_filling = 0\\.3\n"), "\nball_filling = 0.04\n");
+    REQUIRE(t != pilot);
+    write_file(dir / "few.toml", t);
+    const RunResult r = run_linerlife("charge " + (dir / "few.toml").string() + " --json --model dem", 60);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK_THAT(r.err, Catch::Contains((dir / "few.toml").string() + ":19: filling = 0.04 holds only 8 discs"));
+    CHECK_THAT(r.err, !Catch::Contains("lower coarse_grain"));
+    write_file(dir / "few_cg.toml", t + "\n[dem]\ncoarse_grain = 1.2\n");
+    const RunResult c = run_linerlife("charge " + (dir / "few_cg.toml").string() + " --json --model dem", 60);
+    INFO(c.err);
+    CHECK(c.code == 2);
+    CHECK_THAT(c.err, Catch::Contains("coarse_grain = 1.2 leaves 6 discs"));
+    CHECK_THAT(c.err, Catch::Contains("lower coarse_grain, 1 at the least"));
+  }
+  fs::remove_all(dir);
+}
