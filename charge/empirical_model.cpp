@@ -1,5 +1,6 @@
 #include "charge/empirical_model.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -78,13 +79,23 @@ ChargeResult EmpiricalModel::run(const ChargeInput& in) const {
   const double rc = 2.0 / 3.0 * (rm * rm * rm - ri * ri * ri) / (rm * rm - ri * ri) * std::sin(0.5 * span) / (0.5 * span);
   I.com_radius_m = rc;
   I.com_angle_deg = to_physical_deg(r.toe_rad + 0.5 * span, in.mill.rotation);
-  I.n_layers = c.ball_diameter_m > 0 ? static_cast<int>(std::lround((rm - ri) / c.ball_diameter_m)) : 0;
+  // media-diameter layers in the annulus r_i < r < r_m, rounded, and at
+  // least one where there is a charge (a bed thinner than half a ball, at a
+  // few per cent filling, rounded to none: the input sweep of 2026-12-07)
+  I.n_layers = c.ball_diameter_m > 0 && rm > ri
+                   ? std::max(1, static_cast<int>(std::lround((rm - ri) / c.ball_diameter_m)))
+                   : 0;
   I.n_trajectories = -1;  // the C-model has no trajectories
-  // layer speeds: Morrell's linear law at the layer centres (thesis eq. 4.16 with z)
+  // layer speeds: Morrell's linear law at the layer centres (thesis eq. 4.16
+  // with z), r_m - (j + 1/2) d; a layer whose centre would lie inside r_i
+  // (only the one of a bed thinner than half a ball) at the bed's middle
   if (c.ball_diameter_m > 0 && !r.centrifuged) {
     const double vm = 2.0 * kPi * mi.speed_rps * rm, zri = r.z * ri;
-    for (double rj = rm - 0.5 * c.ball_diameter_m; rj >= ri; rj -= c.ball_diameter_m)
+    for (int j = 0; j < I.n_layers; ++j) {
+      double rj = rm - (j + 0.5) * c.ball_diameter_m;
+      if (rj < ri) rj = 0.5 * (ri + rm);
       I.layer_speed_rpm.push_back(vm * (rj - zri) / (rm - zri) / rj * 60.0 / (2.0 * kPi));
+    }
   }
   I.net_power_kw = r.cylinder_power_kw + r.cone_power_kw;
   I.net_power_w_per_m = in.mill.length_m > 0 ? r.cylinder_power_kw * 1000.0 / in.mill.length_m : 0.0;

@@ -58,3 +58,29 @@ TEST_CASE("a clockwise mill gives the mirror image in the physical frame", "[cha
   CHECK(b.indicators.com_angle_deg == Approx(mirror_deg(a.indicators.com_angle_deg)).margin(1e-9));
   CHECK(b.indicators.net_power_kw == Approx(a.indicators.net_power_kw).epsilon(1e-9));
 }
+
+TEST_CASE("a bed thinner than half a ball is one layer, with its speed at the bed's middle", "[charge][empirical]") {
+  // the input sweep of 2026-12-07: at 1 % filling the C-model's annulus
+  // r_i < r < r_m is a few centimetres deep, and the count rounded to none
+  Config c = load_default_config();
+  c.charge.filling = 0.01;  // the least allowed, with 0.1333 m balls
+  c.charge.ball_filling = 0.01;
+  c.mill.speed_rpm = 13.0;  // 0.97 of critical: the bed thins below half a ball (0.067 m at 10.36 rpm)
+  const LinerSurface s = build_liner_surface(c.mill, c.liner);
+  const ChargeResult r = run_model("empirical", charge_input(c, s, 0));
+  const double rm = 0.5 * r.indicators.diameter_eff_m, ri = r.indicators.inner_radius_m;
+  REQUIRE(rm - ri > 0);
+  REQUIRE(rm - ri < 0.5 * c.charge.ball_diameter_m);  // the case: thinner than half a ball
+  CHECK(r.indicators.n_layers == 1);
+  REQUIRE(r.indicators.layer_speed_rpm.size() == 1);
+  // Morrell's linear law (thesis eq. 4.16 with z) at the bed's middle: slower
+  // than the shell, faster than nothing
+  const double v = r.indicators.layer_speed_rpm[0];
+  CHECK(v > 0);
+  CHECK(v < c.mill.speed_rpm);
+  // the default charge: the rounded count, one speed per layer, as before
+  const ChargeResult d = run_model("empirical", charge_input(load_default_config(), s, 0));
+  const double rm0 = 0.5 * d.indicators.diameter_eff_m, ri0 = d.indicators.inner_radius_m;
+  CHECK(d.indicators.n_layers == std::lround((rm0 - ri0) / c.charge.ball_diameter_m));
+  CHECK(d.indicators.layer_speed_rpm.size() == static_cast<size_t>(d.indicators.n_layers));
+}
