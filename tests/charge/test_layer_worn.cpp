@@ -266,3 +266,34 @@ TEST_CASE("layer model: on a worn hi-lo liner the charge stays where the DEM's d
   CHECK(angle_diff(w.toe_deg, n.toe_deg) < 6.0);
   CHECK(angle_diff(w.com_angle_deg, 305.2) < 8.0);
 }
+
+TEST_CASE("layer model: a hi-lo ring with zero-height low lifters runs as the uniform ring of half as many",
+          "[charge][layer][worn]") {
+  // The two rings have the same surface: 64 segments, every other one bare
+  // plate, against 32 lifters. A ball over a segment without a lifter is in
+  // the pocket of the lifter behind it (setup_flight_angles(), holder). Until
+  // 2026-12-07 it left at the unheld angle with its layer's speed: the
+  // hi-lo ring threw its outer layer from 57 deg onto the bare liner at
+  // 12.8 m/s (the uniform ring nothing above 1.2 m/s), and its forecast
+  // lasted 294 h against 3,026 h (the input sweep of 2026-12-07).
+  Config hl = load_default_config();
+  hl.liner.hi_lo = true;
+  hl.liner.low = hl.liner.design;
+  hl.liner.low.lifter_height_m = 0.0;
+  Config u = load_default_config();
+  u.liner.segments = hl.liner.segments / 2;
+  const ChargeResult a = run_model("layer", charge_input(hl, build_liner_surface(hl.mill, hl.liner), 3));
+  const ChargeResult b = run_model("layer", charge_input(u, build_liner_surface(u.mill, u.liner), 3));
+  CHECK(a.indicators.net_power_kw == Approx(b.indicators.net_power_kw).epsilon(0.01));
+  CHECK(angle_diff(a.indicators.toe_deg, b.indicators.toe_deg) < 1.0);
+  CHECK(angle_diff(a.indicators.shoulder_deg, b.indicators.shoulder_deg) < 1.0);
+  // no fast impacts on either (the defect threw 157 balls at 12.8 m/s)
+  auto fastest = [](const ChargeResult& r) {
+    double v = 0;
+    for (const ImpactEvent& e : r.loads.impacts) v = std::max(v, e.normal_speed_m_s);
+    return v;
+  };
+  INFO("fastest normal impact: hi-lo " << fastest(a) << " m/s, uniform " << fastest(b) << " m/s");
+  CHECK(fastest(a) < 5.0);
+  CHECK(fastest(a) < fastest(b) + 1.0);
+}
