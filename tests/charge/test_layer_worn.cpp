@@ -29,6 +29,17 @@ Point run_on(const Config& c, const LinerSurface& s, double revolutions) {
           r.indicators.shoulder_deg};
 }
 
+/// The bundled mill as a new hi-lo liner: every other lifter a low one of the
+/// same faces, low_height tall and low_top wide.
+Config hilo_config(double low_height, double low_top) {
+  Config c = load_default_config();
+  c.liner.hi_lo = true;
+  c.liner.low = c.liner.design;
+  c.liner.low.lifter_height_m = low_height;
+  c.liner.low.top_width_m = low_top;
+  return c;
+}
+
 std::vector<Eigen::Vector2d> worn_segment(const Config& c, const std::string& name) {
   const MeasuredProfile p = load_profile_csv(std::string(LINERLIFE_SOURCE_DIR) + "/tests/charge/data/" + name);
   return measured_profile_to_segment(p, c.mill.shell_radius_m(), c.liner.segments, c.liner.element_size_m);
@@ -117,11 +128,7 @@ TEST_CASE("layer model: a hi-lo ring's indicators change continuously as its low
   // McIvor's angle passed 0 deg, fell by 30 % in one step of wear (on the
   // bundled hi-lo forecast's rings 7,645 -> 5,321 kW between 3,700 and
   // 3,800 h).
-  Config c = load_default_config();
-  c.liner.hi_lo = true;
-  c.liner.low = c.liner.design;
-  c.liner.low.lifter_height_m = 0.125;
-  c.liner.low.top_width_m = 0.15;
+  const Config c = hilo_config(0.125, 0.15);
   const double R = c.mill.shell_radius_m();
   const int S = c.liner.segments;
   const LinerSurface s_new = build_liner_surface(c.mill, c.liner);
@@ -241,11 +248,7 @@ TEST_CASE("layer model: on a worn hi-lo liner the charge stays where the DEM's d
   const LinerSurface worn = assemble_ring(
       R, S, {worn_segment(c, "qiu_hilo_4244h_high.csv"), worn_segment(c, "qiu_hilo_4244h_low.csv")}, design);
   REQUIRE(worn.segment_design[1] == 1);
-  Config ch = c;
-  ch.liner.hi_lo = true;
-  ch.liner.low = c.liner.design;
-  ch.liner.low.lifter_height_m = 0.125;
-  ch.liner.low.top_width_m = 0.15;
+  const Config ch = hilo_config(0.125, 0.15);
   const Indicators n = run_model("layer", charge_input(ch, build_liner_surface(ch.mill, ch.liner), 20)).indicators;
   const Indicators w = run_model("layer", charge_input(c, worn, 20)).indicators;
   INFO("new hi-lo: power " << n.net_power_kw << " kW, toe " << n.toe_deg << "; worn: power " << w.net_power_kw
@@ -276,10 +279,7 @@ TEST_CASE("layer model: a hi-lo ring with zero-height low lifters runs as the un
   // hi-lo ring threw its outer layer from 57 deg onto the bare liner at
   // 12.8 m/s (the uniform ring nothing above 1.2 m/s), and its forecast
   // lasted 294 h against 3,026 h (the input sweep of 2026-12-07).
-  Config hl = load_default_config();
-  hl.liner.hi_lo = true;
-  hl.liner.low = hl.liner.design;
-  hl.liner.low.lifter_height_m = 0.0;
+  const Config hl = hilo_config(0.0, load_default_config().liner.design.top_width_m);
   Config u = load_default_config();
   u.liner.segments = hl.liner.segments / 2;
   const ChargeResult a = run_model("layer", charge_input(hl, build_liner_surface(hl.mill, hl.liner), 3));
