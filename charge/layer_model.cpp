@@ -526,6 +526,7 @@ class LayerSim {
     return h.held && h.released && std::isfinite(rb) && rb > h.release ? rb : kInf;
   }
   std::vector<char> fa_by_segment_;
+  std::vector<int> holder_;  // per segment: the lifter that pushes what rides over it, -1 on a ring without (setup_flight_angles())
   double tan_g_ = 0;                        // tan of the angle of repose
   std::vector<int> elem_layer_, elem_slot_; // -1 when flying
   std::vector<double> elem_y_entry_;        // [m] height where it last entered the charge
@@ -1127,12 +1128,13 @@ void LayerSim::setup_flight_angles() {
   // lifters, the same surface as the uniform ring of half as many lifters,
   // threw its outer layer from 57 deg onto the bare liner (12.8 m/s): a
   // forecast life of 294 h against 3,026 h (the input sweep of 2026-12-07).
-  std::vector<int> holder(static_cast<size_t>(S), -1);
+  // (pocket_lifter() reads it too.)
+  holder_.assign(static_cast<size_t>(S), -1);
   for (int k = 0; k < S; ++k)
     for (int b = 0; b < S; ++b) {
       const int kb = ((k - b) % S + S) % S;
       if (n_held[static_cast<size_t>(kb)] > 0) {
-        holder[static_cast<size_t>(k)] = kb;
+        holder_[static_cast<size_t>(k)] = kb;
         break;
       }
     }
@@ -1195,7 +1197,7 @@ void LayerSim::setup_flight_angles() {
       for (int k = 0; k < S; ++k) {
         HeldLaunch& h = held_[j][k];
         h = HeldLaunch{};
-        const int kh = holder[static_cast<size_t>(k)];
+        const int kh = holder_[static_cast<size_t>(k)];
         if (kh < 0 || j >= n_held[static_cast<size_t>(kh)] || !(l.omega > 0)) continue;
         const auto& sm = seg_[kh];
         h.held = true;
@@ -1479,13 +1481,12 @@ int LayerSim::pocket_lifter(int j, int seg, double psi) const {
   // canonical (anticlockwise) frame: a lifter pushes what lies ahead of its
   // crest, at larger angles; behind the crest, or on a segment without a
   // lifter, the element is ahead of the nearest lifter behind it
+  // (the nearest lifter at or behind segment seg - 1: holder_, setup_flight_angles())
   const int S = static_cast<int>(seg_.size());
-  auto lifter = [&](int k) { return seg_[k].has_lifter && std::isfinite(seg_[k].face_angle_leading_deg); };
   int k = seg;
-  if (!lifter(k) || std::remainder(psi - seg_[k].crest_angle_rad, kTwoPi) < 0) {
-    int n = 1;
-    for (k = (seg + S - 1) % S; n < S && !lifter(k); ++n) k = (k + S - 1) % S;
-    if (!lifter(k)) return -1;  // no lifter on the ring
+  if (holder_[static_cast<size_t>(k)] != k || std::remainder(psi - seg_[k].crest_angle_rad, kTwoPi) < 0) {
+    k = holder_[static_cast<size_t>((seg + S - 1) % S)];
+    if (k < 0) return -1;  // no lifter on the ring
   }
   const SegmentMetrics& sm = seg_[k];
   const double off = wrap2pi(psi - sm.crest_angle_rad);
