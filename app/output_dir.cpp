@@ -36,6 +36,18 @@ std::string lock_key(const std::string& dir) {
   return s;
 }
 
+// Whether the process that named a temporary is gone: no such process, or a
+// zombie (a chart script killed with linerlife, app/plots.cpp, whose new
+// parent has not yet reaped it, still answers kill(pid, 0)).
+bool process_gone(long pid) {
+  if (kill(static_cast<pid_t>(pid), 0) != 0) return errno == ESRCH;
+  std::ifstream stat(fmt::format("/proc/{}/stat", pid));
+  std::string line;
+  if (!std::getline(stat, line)) return false;
+  const auto close = line.rfind(')');  // the name in parentheses may hold spaces
+  return close != std::string::npos && close + 2 < line.size() && line[close + 2] == 'Z';
+}
+
 }  // namespace
 
 std::string output_dir_lock_path(const std::string& dir) {
@@ -197,7 +209,7 @@ void OutputDir::prepare() {
     const long pid = std::strtol(n.c_str() + at + 5, &end, 10);
     if (std::strcmp(end, ".png") == 0) end += 4;
     if (pid <= 0 || *end != '\0' || pid == static_cast<long>(getpid())) continue;
-    if (kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) fs::remove(e.path(), ec);
+    if (process_gone(pid)) fs::remove(e.path(), ec);
   }
   prepared_ = true;
 }

@@ -7,18 +7,58 @@
 #include <iostream>
 
 #include <fmt/format.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace linerlife {
 namespace {
 
-std::string shell_quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) {
-    if (c == '\'') out += "'\\''";
-    else out += c;
+/// Runs argv[0] (looked up on PATH when it has no slash) with argv, its
+/// standard output read into `text`, its standard error ours; returns its
+/// wait status, or -1 when it could not be started. The child gets SIGKILL
+/// when linerlife dies (prctl PR_SET_PDEATHSIG): a linerlife killed while its
+/// charts are drawn must not leave the script running on in the folder, where
+/// it held a temporary chart past the next run's clean-up and would rename
+/// the dead run's charts over the next run's (a CI failure, 2026-12-07: a
+/// resumed forecast ended with a .forecast_*.tmp.PID.png of the killed run's
+/// script in its folder). The popen() used before could not set this.
+int run_reading_stdout(const std::vector<std::string>& argv, std::string& text) {
+  int fds[2];
+  if (pipe2(fds, O_CLOEXEC) != 0) return -1;
+  std::vector<char*> args;
+  std::vector<std::string> a = argv;
+  for (std::string& s : a) args.push_back(s.data());
+  args.push_back(nullptr);
+  const pid_t parent = getpid();
+  std::fflush(nullptr);
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(fds[0]);
+    close(fds[1]);
+    return -1;
   }
-  return out + "'";
+  if (pid == 0) {
+    // only async-signal-safe calls from here to exec
+    if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent) _exit(127);  // parent already gone
+    if (dup2(fds[1], STDOUT_FILENO) < 0) _exit(127);
+    execvp(args[0], args.data());
+    _exit(127);
+  }
+  close(fds[1]);
+  char buf[4096];
+  for (;;) {
+    const ssize_t n = read(fds[0], buf, sizeof buf);
+    if (n > 0) text.append(buf, static_cast<size_t>(n));
+    else if (n == 0 || errno != EINTR) break;
+  }
+  close(fds[0]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return -1;
+  return status;
 }
 
 }  // namespace
@@ -34,17 +74,11 @@ int run_plot_script(const std::string& kind, const std::string& results_h5, cons
   const std::string python = py_env ? py_env : "/usr/bin/python3";
   const std::string script = plot_script();
   if (!std::filesystem::exists(script)) return -1;
-  const std::string cmd = fmt::format("{} {} {} {} {}", shell_quote(python), shell_quote(script), shell_quote(kind),
-                                      shell_quote(results_h5), shell_quote(out_dir));
   // the script's standard output is read (its report of a damaged dataset);
   // its standard error goes to ours
-  std::fflush(nullptr);
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return 127;
   std::string text;
-  char buf[4096];
-  for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) text.append(buf, n);
-  const int rc = pclose(p);
+  const int rc = run_reading_stdout({python, script, kind, results_h5, out_dir}, text);
+  if (rc == -1) return 127;
   while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
   if (report) *report = text;
   else if (!text.empty()) std::cout << text << "\n";

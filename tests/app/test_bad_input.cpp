@@ -13,6 +13,7 @@
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -844,6 +845,36 @@ TEST_CASE("a chart that cannot be written is said plainly and leaves no temporar
     if (e.path().filename().string().find(".tmp.") != std::string::npos) temporaries.push_back(e.path().string());
   INFO(temporaries.size() << " temporaries left, the first: " << (temporaries.empty() ? "" : temporaries.front()));
   CHECK(temporaries.empty());
+  fs::remove_all(dir);
+}
+
+// A chart script killed with its linerlife (app/plots.cpp) may be a zombie
+// for a moment, until its new parent reaps it; kill(pid, 0) still answers for
+// a zombie, and the next run kept its temporary.
+TEST_CASE("the temporaries of a process that is a zombie are removed, those of a live one kept", "[app][output]") {
+  const fs::path dir = temp_dir("zombie_tmp");
+  const pid_t zombie = fork();
+  if (zombie == 0) _exit(0);
+  const pid_t alive = fork();
+  if (alive == 0) {
+    pause();
+    _exit(0);
+  }
+  // wait until the first child has exited and is not reaped
+  for (int i = 0; i < 2000; ++i) {
+    const std::string stat = read_file(fmt::format("/proc/{}/stat", zombie));
+    if (stat.size() > stat.rfind(')') + 2 && stat[stat.rfind(')') + 2] == 'Z') break;
+    usleep(1000);
+  }
+  write_file(dir / fmt::format(".forecast_lifter.png.tmp.{}.png", zombie), "half a chart");
+  write_file(dir / fmt::format(".forecast_profiles.png.tmp.{}.png", alive), "a chart being drawn");
+  linerlife::OutputDir out(dir.string());
+  out.prepare();
+  CHECK_FALSE(fs::exists(dir / fmt::format(".forecast_lifter.png.tmp.{}.png", zombie)));
+  CHECK(fs::exists(dir / fmt::format(".forecast_profiles.png.tmp.{}.png", alive)));
+  kill(alive, SIGKILL);
+  waitpid(alive, nullptr, 0);
+  waitpid(zombie, nullptr, 0);
   fs::remove_all(dir);
 }
 
