@@ -97,7 +97,7 @@ void lock_output_dir(const std::string& dir) {
   // the old file meanwhile finds, once locked, that the name is no longer its
   // file, and opens the new one (the usual flock-and-unlink pattern).
   for (int attempt = 0; attempt < 8; ++attempt) {
-    // O_CLOEXEC: the chart scripts (popen) do not inherit the lock
+    // O_CLOEXEC: the chart scripts (fork and exec, app/plots.cpp) do not inherit the lock
     int fd = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
     if (fd < 0) fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);  // another user's lock file: lockable read-only
     if (fd < 0) return;                                        // no temporary folder: nothing locked

@@ -43,7 +43,10 @@ int run_reading_stdout(const std::vector<std::string>& argv, std::string& text) 
   if (pid == 0) {
     // only async-signal-safe calls from here to exec
     if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent) _exit(127);  // parent already gone
-    if (dup2(fds[1], STDOUT_FILENO) < 0) _exit(127);
+    // the pipe's end onto the standard output (when it already is fd 1, a
+    // linerlife started without standard input and output, dup2 would leave
+    // its close-on-exec flag set)
+    if (fds[1] == STDOUT_FILENO ? fcntl(fds[1], F_SETFD, 0) != 0 : dup2(fds[1], STDOUT_FILENO) < 0) _exit(127);
     execvp(args[0], args.data());
     _exit(127);
   }
