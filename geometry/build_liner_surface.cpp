@@ -134,23 +134,23 @@ void validate_lifter_design(const Mill& mill, int segments, const LifterDesign& 
                                  "top ({:.4g} m for {} segments)",
                                  nm("lifter_top_width_m"), d.top_width_m, chord_at_top, segments));
   const double feature = std::min({d.lifter_height_m, d.top_width_m});
+  // the dimension that sets `feature`, named by both refusals below
+  const bool top = d.top_width_m <= d.lifter_height_m;
+  const char* limit = top ? "lifter_top_width_m" : "lifter_height_m";
   // A lifter feature narrower than four of the finest elements allowed
   // cannot be meshed at any element_size_m: name the feature, not the
   // element size (the message below asked for an element_size_m under its
   // own 1 mm floor for a 3 mm top).
   if (0.25 * feature < kMinElementSizeM) {
-    const bool top = d.top_width_m <= d.lifter_height_m;
-    const char* name = top ? "lifter_top_width_m" : "lifter_height_m";
-    throw InputError(key(name),
+    throw InputError(key(limit),
                      fmt::format("{} = {} m is under four of the finest surface elements (element_size_m >= {} m), "
                                  "so no mesh resolves the lifter; allowed {} >= {} m{}",
-                                 nm(name), feature, kMinElementSizeM, nm(name), 4 * kMinElementSizeM,
+                                 nm(limit), feature, kMinElementSizeM, nm(limit), 4 * kMinElementSizeM,
                                  top ? "" : fmt::format(", or {} = 0 for no lifter", nm("lifter_height_m"))));
   }
   if (h > 0.25 * feature) {
     // name the dimension that limits it, as written ("low_lifter_height_m"
     // for the low lifter of a hi-lo liner), with its value
-    const char* limit = d.top_width_m <= d.lifter_height_m ? "lifter_top_width_m" : "lifter_height_m";
     throw InputError("liner.element_size_m",
                      fmt::format("element_size_m = {} m is too coarse to resolve the {}lifter ({} = {} m): it must be "
                                  "at most a quarter of its height and top width ({:.4g} m)",
