@@ -112,6 +112,32 @@ void check_fitted_factors(const Config& c, const std::array<double, 3>& s, const
   }
 }
 
+/// Where the configuration sets a key: "FILE:LINE", or "the default" where
+/// the file does not set it (messages that name a limit the user never wrote).
+std::string key_origin_text(const Config& c, const std::string& key) {
+  if (!c.key_lines.count(key) && !c.key_origin.count(key)) return "the default";
+  std::string at = config_location(c, key);  // "FILE:LINE: "
+  return at.substr(0, at.size() - 2);
+}
+
+/// The rest of the life is forecast from the last measured profile up to the
+/// forecast's horizon, [forecast] max_operating_hours counted from the new
+/// liner as in `linerlife forecast`: a profile measured at or beyond it
+/// leaves nothing to forecast. (A review, 2026-12-07: the rest ran for the
+/// whole horizon again from the scan, so a 4,500 h horizon gave a relining
+/// at 5,431 h, exit 0; scans labelled 1e12 h gave dates past the year 9999,
+/// and 1e30 h made the fit's forecast ask for some 1e21 records.)
+void check_history_within_horizon(const Config& c, const MeasuredHistory& h, const std::string& measured) {
+  const MeasuredSnapshot& last = h.snapshots.back();
+  const double horizon = c.forecast.max_operating_hours;
+  if (last.hours < horizon) return;
+  throw InputError(measured, fmt::format(
+      "{}:{}: hours = {}: the profile is measured at or beyond the forecast's horizon, [forecast] "
+      "max_operating_hours = {} h ({}), counted from the new liner; allowed hours below {} h: check the hours of "
+      "the profiles, or raise max_operating_hours",
+      measured, last.first_line, last.hours, horizon, key_origin_text(c, "forecast.max_operating_hours"), horizon));
+}
+
 int run_calibrate(const CalibrateOptions& o) {
   const Config c = load_config_or_default(o.config);
   if (o.measured.empty()) throw InputError("--measured", "calibrate needs --measured FILE.csv (docs/measured-profiles.md)");
@@ -126,6 +152,7 @@ int run_calibrate(const CalibrateOptions& o) {
                                   "calibrate a uniform liner (docs/measured-profiles.md)"));
   const MeasuredHistory h = load_measured_history(o.measured);
   validate_measured_history(h, c.mill.shell_radius_m(), c.liner.segments);
+  check_history_within_horizon(c, h, o.measured);
   check_history_has_wear(h);
   const std::vector<Param> ps = parse_fit(o.fit);
   check_fit_against_laws(ps, o.fit, c);
@@ -187,10 +214,33 @@ int run_calibrate(const CalibrateOptions& o) {
   // the rest of the life from the last measured profile
   ForecastInput rest = setup.input;
   rest.initial = worn_ring.get();
+  // up to the horizon, counted from the new liner (check_history_within_horizon())
+  ForecastSpec rest_spec = c.forecast;
+  const double horizon_h = c.forecast.max_operating_hours - last.hours;  // > 0
+  rest_spec.max_operating_hours = horizon_h;
   const LifeQuantiles q = due ? LifeQuantiles{0, 0, 0, 0, due->name, 0}
-                              : life_quantiles(r.params, r.covariance_log, p.make_provider, rest, c.forecast, jobs);
+                              : life_quantiles(r.params, r.covariance_log, p.make_provider, rest, rest_spec, jobs);
   const Calendar& cal_days = c.forecast.calendar;
-  auto date = [&](double remaining_h) { return iso_date(cal_days.date_after(last.hours + remaining_h)); };
+  // A quantile at the horizon or beyond is a life the forecast did not reach
+  // (the fitted run ended on the horizon, or the spread carries it past):
+  // as `linerlife forecast` does, no relining date for it, "" in --json
+  // (null) and "beyond DATE" in the text.
+  auto beyond = [&](double remaining_h) { return q.criterion == "horizon" || remaining_h >= horizon_h; };
+  auto date = [&](double remaining_h) {
+    return beyond(remaining_h) ? std::string() : iso_date(cal_days.date_after(last.hours + remaining_h));
+  };
+  const std::string horizon_date = iso_date(cal_days.date_after(c.forecast.max_operating_hours));
+  auto life_text = [&](const char* name, double remaining_h) {
+    if (beyond(remaining_h))
+      return fmt::format("{} beyond the horizon ({:.0f} h, {})", name, horizon_h, horizon_date);
+    return fmt::format("{} {:.0f} h ({})", name, remaining_h, date(remaining_h));
+  };
+  const std::string lives =
+      q.criterion == "horizon"
+          ? fmt::format("not reached within the horizon: more than {:.0f} h (the horizon, {}); horizon", horizon_h,
+                        horizon_date)
+          : fmt::format("{}, {}, {}; {}", life_text("P10", q.p10_h), life_text("P50", q.p50_h),
+                        life_text("P90", q.p90_h), q.criterion);
 
   if (o.json) {
     Json params = Json::array();
@@ -213,10 +263,11 @@ int run_calibrate(const CalibrateOptions& o) {
         .set("remaining_hours_p10", q.p10_h)
         .set("remaining_hours_p50", q.p50_h)
         .set("remaining_hours_p90", q.p90_h)
-        .set("relining_date_p10", date(q.p10_h))
-        .set("relining_date_p50", date(q.p50_h))
-        .set("relining_date_p90", date(q.p90_h))
-        .set("criterion", q.criterion);
+        .set_or_null("relining_date_p10", date(q.p10_h))
+        .set_or_null("relining_date_p50", date(q.p50_h))
+        .set_or_null("relining_date_p90", date(q.p90_h))
+        .set("criterion", q.criterion)
+        .set("horizon_date", horizon_date);
     std::cout << j.dump() << "\n";
   } else {
     std::cout << fmt::format("Calibration of {} against {} ({} profiles, {} to {} h)\n", c.source, o.measured,
@@ -234,9 +285,7 @@ int run_calibrate(const CalibrateOptions& o) {
       std::cout << fmt::format("  remaining life from {} h: 0 h, due now ({}): the last measured profile meets {}\n",
                                last.hours, date(0), q.criterion);
     else
-      std::cout << fmt::format("  remaining life from {} h: P10 {:.0f} h ({}), P50 {:.0f} h ({}), P90 {:.0f} h ({}); {}\n",
-                               last.hours, q.p10_h, date(q.p10_h), q.p50_h, date(q.p50_h), q.p90_h, date(q.p90_h),
-                               q.criterion);
+      std::cout << fmt::format("  remaining life from {} h: {}\n", last.hours, lives);
   }
 
   if (!o.out.empty()) {
@@ -252,9 +301,7 @@ int run_calibrate(const CalibrateOptions& o) {
     head += fmt::format("#   RMS misfit {:.2f} mm (was {:.2f} mm with the given factors){}\n", 1000 * r.rms_m,
                         1000 * r.rms_initial_m, r.converged ? "" : "; the fit did not converge");
     head += due ? fmt::format("#   remaining life from {} h: 0 h, due now ({})\n", last.hours, q.criterion)
-                : fmt::format("#   remaining life from {} h: P10 {:.0f} h ({}), P50 {:.0f} h ({}), P90 {:.0f} h ({}); {}\n",
-                              last.hours, q.p10_h, date(q.p10_h), q.p50_h, date(q.p50_h), q.p90_h, date(q.p90_h),
-                              q.criterion);
+                : fmt::format("#   remaining life from {} h: {}\n", last.hours, lives);
     dir.write_text("calibrated.toml", head + config_to_toml(cal, true));
     const std::vector<ProfileRecord> fitted = fitted_profiles(p, r.params);
     const std::string tmp = dir.temp_path("calibrate.h5");
@@ -277,6 +324,7 @@ int run_calibrate(const CalibrateOptions& o) {
       h5.attr("/calibrate", "relining_date_p10", date(q.p10_h));
       h5.attr("/calibrate", "relining_date_p50", date(q.p50_h));
       h5.attr("/calibrate", "relining_date_p90", date(q.p90_h));
+      h5.attr("/calibrate", "horizon_date", horizon_date);
       h5.attr("/calibrate", "calibration_centrifugal", cal.wear.calibration_centrifugal);
       h5.attr("/calibrate", "calibration_gravitational", cal.wear.calibration_gravitational);
       h5.attr("/calibrate", "calibration_impact", cal.wear.calibration_impact);

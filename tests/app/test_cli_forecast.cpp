@@ -942,6 +942,59 @@ TEST_CASE("calibrate recovers the wear factor of synthetic scans from the comman
   fs::remove_all(dir);
 }
 
+// The rest of the life runs up to the forecast's horizon counted from the new
+// liner, as `linerlife forecast` counts it (a review, 2026-12-07: it ran the
+// whole horizon again from the last scan, so a 4,500 h horizon gave a
+// relining at 5,431 h, exit 0, and scans labelled 1e12 h a date past the
+// year 9999; 1e30 h made the fit's forecast ask for 1e21 records).
+TEST_CASE("calibrate forecasts the rest of the life up to the horizon counted from the new liner",
+          "[app][cli][calibrate]") {
+  const fs::path dir = temp_dir("fc_calibrate_horizon");
+  const std::string scans = std::string(LINERLIFE_SOURCE_DIR) + "/data/measured/qiu2001_synthetic_scans.csv";
+  // the fast mill's life on the plate is about 5,400 h from new with these
+  // scans' factor (the last scan at 4,000 h); the horizon ends it at 4,500 h
+  write_file(dir / "m.toml", std::regex_replace(fast_qiu("max_operating_hours = 4500\n"),
+                                                std::regex("min_lifter_height_m = 0.2\n"), "min_lifter_height_m = 0.1\n"));
+  const RunResult r = run_linerlife("calibrate " + (dir / "m.toml").string() + " --measured " + scans +
+                                    " --fit abrasion --jobs 1 --json");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const JsonValue j = parse_json(r.out);
+  CHECK(j["last_measured_hours"].num() == 4000);
+  CHECK(j["criterion"].str() == "horizon");
+  for (const char* q : {"p10", "p50", "p90"}) {
+    CHECK(j[std::string("remaining_hours_") + q].num() == Approx(500).margin(1e-6));
+    CHECK(j[std::string("relining_date_") + q].kind == JsonValue::Kind::Null);  // not reached: no date
+  }
+  // the horizon's date is the forecast's end date for the same file
+  const RunResult f = run_linerlife("forecast " + (dir / "m.toml").string() + " --json --quiet");
+  REQUIRE(f.code == 0);
+  const JsonValue jf = parse_json(f.out);
+  REQUIRE(jf["criterion"].str() == "horizon");
+  CHECK(j["horizon_date"].str() == jf["end_date"].str());
+  // the text says so instead of giving a date
+  const RunResult t = run_linerlife("calibrate " + (dir / "m.toml").string() + " --measured " + scans +
+                                    " --fit abrasion --jobs 1");
+  REQUIRE(t.code == 0);
+  CHECK_THAT(t.out, Catch::Contains("remaining life from 4000 h: not reached within the horizon: more than 500 h (the "
+                                    "horizon, " + jf["end_date"].str() + ")"));
+
+  // a last scan at or beyond the horizon leaves nothing to forecast: refused
+  // before any work, naming the scan's line, its hours and the horizon's line
+  write_file(dir / "short.toml", fast_qiu("max_operating_hours = 4000\n"));
+  const std::string text = read_file((dir / "short.toml").string());
+  const long line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(text.find("max_operating_hours = 4000")), '\n');
+  const RunResult s = run_linerlife("calibrate " + (dir / "short.toml").string() + " --measured " + scans +
+                                    " --fit abrasion --jobs 1 --out " + (dir / "out").string());
+  INFO(s.err);
+  CHECK(s.code == 2);
+  CHECK_THAT(s.err, Catch::Contains(scans + ":52: hours = 4000: the profile is measured at or beyond the forecast's "
+                                    "horizon, [forecast] max_operating_hours = 4000 h (" +
+                                    (dir / "short.toml").string() + ":" + std::to_string(line) + ")"));
+  CHECK_FALSE(fs::exists(dir / "out"));
+  fs::remove_all(dir);
+}
+
 // A review (2026-12-06): a liner that wears only a few refresh_tol_m is
 // forecast on a few charge drives, and its life may not have converged in the
 // tolerance (a 0.2 m mill: 15,833 h on 1 drive, 13,711 h on 25).
