@@ -245,6 +245,14 @@ void check_and_resolve(Config& c) {
 
   // liner design
   LinerDesign& L = c.liner;
+  // An empty path is a script's unset variable, not a choice: the key left
+  // out gives the parametric lifter. Taken as no key, it ran the standard
+  // lifter without a word (a review, 2026-12-07), as an empty CONFIG once ran
+  // the bundled mill (docs/reliability.md).
+  if (c.profile_csv.empty() && (c.key_lines.count("liner.profile_csv") || c.key_origin.count("liner.profile_csv")))
+    fail_at(c, "liner.profile_csv",
+            "profile_csv = \"\": an empty path; allowed: the path of a measured profile CSV (docs/profile-csv.md), "
+            "relative to this file; leave the key out for the parametric lifter");
   L.measured = !c.profile_csv.empty();
   const char* parametric[] = {"plate_thickness_m", "lifter_height_m", "lifter_top_width_m",
                               "face_angle_leading_deg", "face_angle_trailing_deg"};
@@ -297,7 +305,7 @@ void check_and_resolve(Config& c) {
       L.profile = load_profile_csv(p.string());
       validate_measured_profile(L.profile, c.mill.shell_radius_m(), L.segments);
     } catch (const InputError& e) {
-      fail_at(c, "liner.profile_csv", fmt::format("[liner] profile_csv = \"{}\": {}", c.profile_csv, e.what()));
+      fail_at(c, "liner.profile_csv", fmt::format("[liner] profile_csv = \"{}\": {}", printable(c.profile_csv), e.what()));
     }
   }
 

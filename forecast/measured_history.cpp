@@ -27,7 +27,7 @@ std::string trim(const std::string& s) {
 MeasuredHistory parse_measured_history(const std::string& text, const std::string& source) {
   MeasuredHistory h;
   h.source = source;
-  std::istringstream in(text);
+  std::istringstream in(without_utf8_bom(text));
   std::string line;
   int lineno = 0;
   bool header_allowed = true;
@@ -72,8 +72,8 @@ MeasuredHistory parse_measured_history(const std::string& text, const std::strin
 MeasuredHistory load_measured_history(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path, fmt::format("measured profile file {} does not exist", path));
-  if (fs::is_directory(path, ec)) throw InputError(path, fmt::format("measured profile file {} is a directory", path));
+  if (!fs::exists(path, ec)) throw InputError(path, fmt::format("measured profile file {} does not exist", printable(path)));
+  if (fs::is_directory(path, ec)) throw InputError(path, fmt::format("measured profile file {} is a directory", printable(path)));
   const std::string text = read_input_file(path, "measured profile file");
   return parse_measured_history(text, path);
 }

@@ -87,4 +87,8 @@ std::string printable(const std::string& text, std::size_t max_bytes) {
   return out;
 }
 
+std::string without_utf8_bom(const std::string& text) {
+  return text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? text.substr(3) : text;
+}
+
 }  // namespace linerlife

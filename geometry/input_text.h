@@ -22,4 +22,9 @@ bool parse_decimal(const std::string& field, double& value);
 /// cut there, on a character boundary, with "... (N bytes)" giving its length.
 std::string printable(const std::string& text, std::size_t max_bytes = 120);
 
+/// `text` without a UTF-8 byte order mark (EF BB BF) at its start, which
+/// spreadsheets write at the head of a "CSV UTF-8" file; other text unchanged.
+/// The mark is invisible where a message quotes the line it starts.
+std::string without_utf8_bom(const std::string& text);
+
 }  // namespace linerlife

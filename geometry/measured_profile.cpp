@@ -89,7 +89,7 @@ std::pair<int, int> first_self_crossing(const std::vector<V>& pts) {
 MeasuredProfile parse_profile_csv(const std::string& text, const std::string& source) {
   MeasuredProfile p;
   p.source = source;
-  std::istringstream in(text);
+  std::istringstream in(without_utf8_bom(text));
   std::string line;
   int lineno = 0;
   bool header_allowed = true;
@@ -125,8 +125,8 @@ MeasuredProfile parse_profile_csv(const std::string& text, const std::string& so
 MeasuredProfile load_profile_csv(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path, fmt::format("profile file {} does not exist", path));
-  if (fs::is_directory(path, ec)) throw InputError(path, fmt::format("profile file {} is a directory", path));
+  if (!fs::exists(path, ec)) throw InputError(path, fmt::format("profile file {} does not exist", printable(path)));
+  if (fs::is_directory(path, ec)) throw InputError(path, fmt::format("profile file {} is a directory", printable(path)));
   const std::string text = read_input_file(path, "profile file");
   return parse_profile_csv(text, path);
 }

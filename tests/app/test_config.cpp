@@ -429,6 +429,24 @@ TEST_CASE("a forecast's start is checked against its criteria at set-up, and cri
   CHECK(make_forecast_setup(load_config_text(quiet, "mill.toml", "."), {false, false, false}, false).warnings.empty());
 }
 
+TEST_CASE("an empty profile_csv is refused, and a path with control bytes is quoted printable", "[app][config][input]") {
+  // An empty path is a script's unset variable: it ran the parametric lifter
+  // without a word (a review, 2026-12-07)
+  const std::string empty = edited("liner", "profile_csv", "\"\"");
+  refused(empty, {"mill.toml:" + std::to_string(line_of(empty, "profile_csv = \"\"")) + ": profile_csv = \"\": an empty path",
+                  "leave the key out for the parametric lifter"});
+  // a newline in the path is written \x0A, not as a line break in the message
+  const std::string nl = edited("liner", "profile_csv", "\"prof.csv\\n\"");
+  try {
+    load_config_text(nl, "mill.toml", ".");
+    FAIL("accepted a profile that does not exist");
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    CHECK_THAT(m, Catch::Contains("profile_csv = \"prof.csv\\x0A\": profile file ./prof.csv\\x0A does not exist"));
+    CHECK(m.find('\n') == std::string::npos);
+  }
+}
+
 TEST_CASE("the parametric lifter keys beside profile_csv are accepted and said to be unused", "[app][config]") {
   // the fuzz corpus's lifter: one segment of the bundled (Qiu) mill
   const std::string csv = std::string(LINERLIFE_SOURCE_DIR) + "/tests/fuzz/corpus/profile_csv/seed_lifter.csv";
