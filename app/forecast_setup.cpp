@@ -112,11 +112,37 @@ namespace {
 /// forecast the first case for 14 s before refusing the second).
 /// Returns the warning for criteria given that cannot apply ("" if none).
 std::string check_start_criteria(const Config& c, const LinerSurface& ring) {
-  if (const auto met = criterion_met(c, ring))
-    throw located(c, InputError(met->key, fmt::format("the liner already meets the relining criterion {} at the start "
-                                                      "({}): nothing to forecast; check the [forecast] criteria "
-                                                      "against the liner",
-                                                      met->name, met->gauges)));
+  // Every criterion met is named, and a limit the file does not set is said
+  // to be the default: the bundled pilot mills' 25 mm bars and 5 mm plates
+  // meet both default limits, and the refusal named one, as if the file had
+  // set it, and then the next (a review, 2026-12-07).
+  const std::vector<MetCriterion> all = criteria_met(c, ring);
+  if (!all.empty()) {
+    const MetCriterion& met = all.front();
+    auto is_default = [&](const std::string& key) { return !c.key_lines.count(key) && !c.key_origin.count(key); };
+    std::vector<std::string> also, defaults;
+    for (const MetCriterion& m : all) {
+      if (m.name == "worn_through") continue;  // said by min_plate_thickness, whose key it shares
+      if (m.name != met.name) also.push_back(fmt::format("{} ({})", m.name, m.limit));
+      if (is_default(m.key)) defaults.push_back(m.key.substr(m.key.find('.') + 1));
+    }
+    auto join = [](const std::vector<std::string>& v) {
+      std::string t;
+      for (size_t i = 0; i < v.size(); ++i) t += (i == 0 ? "" : i + 1 == v.size() ? " and " : ", ") + v[i];
+      return t;
+    };
+    std::string more;
+    if (!also.empty()) more += fmt::format("; it also meets {}", join(also));
+    if (!defaults.empty())
+      more += fmt::format("; {} {} the default{}, not set in the file: set {} in [forecast] below what the new liner "
+                          "has",
+                          join(defaults), defaults.size() == 1 ? "is" : "are", defaults.size() == 1 ? "" : "s",
+                          defaults.size() == 1 ? "it" : "them");
+    throw located(c, InputError(met.key, fmt::format("the liner already meets the relining criterion {} at the start "
+                                                     "({}): nothing to forecast{}; check the [forecast] criteria "
+                                                     "against the liner",
+                                                     met.name, met.gauges, more)));
+  }
   const ForecastSpec& f = c.forecast;
   const SegmentMetrics lifter = segment_metrics(ring, 0, c.mill.rotation, c.liner.density_kg_m3);
   const bool has = lifter.has_lifter;
@@ -143,6 +169,12 @@ std::string check_start_criteria(const Config& c, const LinerSurface& ring) {
 }  // namespace
 
 std::optional<MetCriterion> criterion_met(const Config& c, const LinerSurface& ring) {
+  const std::vector<MetCriterion> all = criteria_met(c, ring);
+  if (all.empty()) return std::nullopt;
+  return all.front();
+}
+
+std::vector<MetCriterion> criteria_met(const Config& c, const LinerSurface& ring) {
   const ForecastSpec& f = c.forecast;
   const int period = pattern_period(ring);
   const SegmentMetrics lifter = segment_metrics(ring, 0, c.mill.rotation, c.liner.density_kg_m3);
@@ -167,13 +199,14 @@ std::optional<MetCriterion> criterion_met(const Config& c, const LinerSurface& r
       fmt::format("[forecast] min_plate_thickness_m = {} m", f.min_plate_thickness_m),
       fmt::format("[forecast] max_face_angle_leading_deg = {} deg", f.max_face_angle_leading_deg),
       fmt::format("a plate at most {} mm thick", 1000 * kWornThroughM)};
+  std::vector<MetCriterion> out;
   for (size_t i = 0; i < met.size(); ++i)
     if (met[i].second)
-      return MetCriterion{met[i].first, keys[i],
-                          fmt::format("lifter height {:.4f} m, thinnest point {:.4f} m, leading face {:.2f} deg",
-                                      lifter.lifter_height_m, thinnest, face),
-                          limits[i]};
-  return std::nullopt;
+      out.push_back(MetCriterion{met[i].first, keys[i],
+                                 fmt::format("lifter height {:.4f} m, thinnest point {:.4f} m, leading face {:.2f} deg",
+                                             lifter.lifter_height_m, thinnest, face),
+                                 limits[i]});
+  return out;
 }
 
 ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fitted, bool print_warnings) {

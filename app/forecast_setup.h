@@ -38,6 +38,9 @@ struct MetCriterion {
 /// none.
 std::optional<MetCriterion> criterion_met(const Config& c, const LinerSurface& ring);
 
+/// Every relining criterion `ring` already meets, in criterion_met()'s order.
+std::vector<MetCriterion> criteria_met(const Config& c, const LinerSurface& ring);
+
 /// Throws InputError for a charge model that is not available, an
 /// incompatible wear law, a liner material out of range, or a DEM coarse
 /// enough that its discs would not fit under the lifter the forecast wears

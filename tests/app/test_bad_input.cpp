@@ -537,6 +537,31 @@ TEST_CASE("a forecast whose new liner already meets a relining criterion is refu
   fs::remove_all(dir);
 }
 
+// Every criterion the new liner meets is named, and a limit the file does not
+// set is said to be the default: the bundled pilot mills (25 mm bars on a 5 mm
+// plate) meet both default limits, and the refusal named one as if the file
+// set it, then the next once that was set (a review, 2026-12-07).
+TEST_CASE("a refused start names every criterion met and which limits are defaults", "[app][cli][input]") {
+  const std::string pilot = std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/pilot_test_01.toml";
+  const RunResult r = run_linerlife("forecast " + pilot + " --quiet", 30);
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("already meets the relining criterion min_lifter_height at the start (lifter "
+                                    "height 0.0250 m, thinnest point 0.0050 m"));
+  CHECK_THAT(r.err, Catch::Contains("it also meets min_plate_thickness ([forecast] min_plate_thickness_m = 0.025 m)"));
+  CHECK_THAT(r.err, Catch::Contains("min_lifter_height_m and min_plate_thickness_m are the defaults, not set in the "
+                                    "file: set them in [forecast] below what the new liner has"));
+  // a limit the file sets is not called a default
+  const fs::path dir = temp_dir("bad_start_defaults");
+  write_file(dir / "p.toml", read_file(pilot) + "\n[forecast]\nmin_lifter_height_m = 0.03\n");
+  const RunResult s = run_linerlife("forecast " + (dir / "p.toml").string() + " --quiet", 30);
+  INFO(s.err);
+  CHECK(s.code == 2);
+  CHECK_THAT(s.err, Catch::Contains("min_plate_thickness_m is the default, not set in the file: set it in [forecast]"));
+  CHECK_THAT(s.err, !Catch::Contains("min_lifter_height_m and"));
+  fs::remove_all(dir);
+}
+
 // Refusals found when the forecast is set up come before the --out folder is
 // made (it is created with the first file written into it).
 TEST_CASE("a forecast refused at setup leaves no output folder", "[app][cli][input]") {
