@@ -560,7 +560,7 @@ Config load_config_text(const std::string& text, const std::string& source, cons
                           "relining date after 9999-12-31 cannot be written as a date; allowed max_operating_hours "
                           "<= {} h here, or {}",
                           hours, iso_date(end), cal.availability, iso_date(cal.start),
-                          cal.shutdowns.empty() ? "" : fmt::format(" with {} shutdowns", cal.shutdowns.size()), h_text,
+                          cal.shutdowns.empty() ? "" : fmt::format(" with {} shutdown{}", cal.shutdowns.size(), cal.shutdowns.size() == 1 ? "" : "s"), h_text,
                           alternative));
     }
   }

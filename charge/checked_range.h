@@ -42,7 +42,7 @@ inline std::vector<std::string> checked_range_notes(const std::string& model, do
                               what, lo, hi, noun, model));
   };
   if (filling < kCheckedFillingMin - kMargin || filling > kCheckedFillingMax + kMargin)
-    outside(fmt::format("filling {:.3g} is", filling), kCheckedFillingMin, kCheckedFillingMax, "fillings");
+    outside(fmt::format("filling {} is", filling), kCheckedFillingMin, kCheckedFillingMax, "fillings");
   if (fraction_critical < kCheckedSpeedMin - kMargin || fraction_critical > kCheckedSpeedMax + kMargin)
     outside(fmt::format("the mill runs at {:.3f} of critical,", fraction_critical), kCheckedSpeedMin, kCheckedSpeedMax,
             "speeds");

@@ -158,9 +158,10 @@ DemSetup make_dem_setup(const ChargeInput& in) {
       const std::string value = balls ? fmt::format("ball_diameter_m = {} m", ch.ball_diameter_m)
                                       : fmt::format("rock_diameter_min_m = {} m", spec.rock_diameter_min_m);
       throw InputError(key, fmt::format("{}: the dem model would need {:.3g} discs ({:.3g} balls, {:.3g} rocks) for "
-                                        "this charge; it takes at most {:.0f}: larger media, or [dem] coarse_grain "
+                                        "this charge; it takes at most {:.0f}: {}, or [dem] coarse_grain "
                                         "(one disc of s times the size for s^2 media)",
-                                        value, n.total(), n.balls, n.rocks, kDemMaxDiscs));
+                                        value, n.total(), n.balls, n.rocks, kDemMaxDiscs,
+                                        balls ? "larger media" : "a larger rock_diameter_min_m"));
     }
   }
   s.particles = make_particle_set(ch, spec, s.free_area, static_cast<unsigned long long>(spec.seed));

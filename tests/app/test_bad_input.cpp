@@ -245,6 +245,9 @@ TEST_CASE("values that hung, ran out of memory or failed inside are refused at t
         "at most 1000000: allowed ball_diameter_m >= 0.008828 m here"}},
       {"ball_diameter_m = ", "ball_diameter_m = 0.001", "charge --model dem --revolutions 1",
        {"ball_diameter_m = 0.001 m: the dem model would need", "discs", "it takes at most 200000", "coarse_grain"}},
+      // fine rocks: the remedy is the rocks' size, not "larger media" (a review, 2026-12-07)
+      {"# rock_diameter_min_m = ", "rock_diameter_min_m = 0.0001", "charge --model dem --revolutions 1",
+       {"rock_diameter_min_m = 0.0001 m: the dem model would need", "a larger rock_diameter_min_m, or [dem] coarse_grain"}},
       // accepted by every command but the empirical model's, with the pool below the mill
       {"# trunnion_diameter_m = ", "trunnion_diameter_m = 10.35", "geometry",
        {"trunnion_diameter_m = 10.35 m is not smaller than the diameter inside the liners (9.9608 m): allowed 0 < "
@@ -357,6 +360,9 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
       {"compare" + o, {"compare needs two or more configurations"}},
       {"compare --vary foo" + o, {"--vary foo", "KEY=v1,v2"}},
       {"compare --vary liner.bogus=1,2" + o, {"unknown configuration key [liner] bogus"}},
+      // a space before '=': "unknown configuration key [mill] speed_rpm ", the space unseen (a review, 2026-12-07)
+      {"compare --vary \"mill.speed_rpm = 10, 9\"" + o,
+       {"--vary mill.speed_rpm = 10, 9: the key \"mill.speed_rpm \" has a space in it", "without spaces around '='"}},
       {"compare --vary liner.lifter_height_m=0.23,0.25 --vary liner.lifter_height_m=0.2" + o,
        {"--vary liner.lifter_height_m=0.2: liner.lifter_height_m is already varied"}},
       {"compare --vary liner.lifter_height_m=0.23 --vary mill.speed_rpm=10" + o, {"--vary: 1 case", "at least two"}},

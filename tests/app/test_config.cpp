@@ -370,6 +370,12 @@ TEST_CASE("a forecast horizon whose date would pass 9999-12-31 is refused", "[ap
   }
   // a start late in the year 9999 leaves room for no default horizon
   refused(edited("forecast", "start_date", "9999-01-01"), {"max_operating_hours = 50000 h ends on +10005-"});
+  // one shutdown or more, counted in words that agree ("with 1 shutdowns" before 2026-12-07)
+  const std::string one = edited_text(t, "forecast", "shutdowns", "[{ start = 2027-06-01, days = 3 }]");
+  refused(one, {"from start_date = 2027-01-01 with 1 shutdown: a relining date"});
+  const std::string two = edited_text(t, "forecast", "shutdowns",
+                                      "[{ start = 2027-06-01, days = 3 }, { start = 2028-06-01, days = 3 }]");
+  refused(two, {"from start_date = 2027-01-01 with 2 shutdowns: a relining date"});
 }
 
 TEST_CASE("a low lifter taller than the high one, and laws that say two things, are refused", "[app][config][input]") {

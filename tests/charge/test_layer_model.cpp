@@ -821,6 +821,8 @@ TEST_CASE("the charge models say when the filling or the speed is outside what t
                                                    " was checked against the 2D DEM"));
     c.charge.filling = 0.18;  // the bound is inside
     CHECK(notes_of(model, c).find("outside") == std::string::npos);
+    c.charge.filling = 0.4999;  // as written, not rounded to 0.5 (a review, 2026-12-07)
+    CHECK_THAT(notes_of(model, c), Catch::Contains("filling 0.4999 is outside 0.18-0.45"));
     c = qiu;
     c.mill.speed_rpm *= 0.95 / 0.773;
     const std::string fast = notes_of(model, c);
