@@ -6,6 +6,7 @@
 // after the other.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <mutex>
 #include <set>
@@ -229,6 +230,17 @@ int run_compare(const CompareOptions& o) {
   } else {
     if (o.configs.size() < 2)
       throw InputError("compare", "compare needs two or more configurations, or one with --vary KEY=v1,v2,...");
+    // one file given twice (under any name) is two identical forecasts under
+    // one label, as --vary x=10,10.0 would be, which is refused (a review,
+    // 2026-12-07: `compare a.toml a.toml` ran both)
+    for (size_t i = 0; i < o.configs.size(); ++i)
+      for (size_t j = 0; j < i; ++j) {
+        std::error_code ec;
+        if (std::filesystem::equivalent(o.configs[i], o.configs[j], ec) && !ec)
+          throw InputError("compare", fmt::format("compare {} ... {}: the file is given twice (configurations {} and "
+                                                  "{}): the two cases would be the same forecast",
+                                                  printable(o.configs[j]), printable(o.configs[i]), j + 1, i + 1));
+      }
     for (const auto& p : o.configs) {
       Case k;
       k.label = p;

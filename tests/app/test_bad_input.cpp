@@ -358,6 +358,9 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
       {"calibrate" + o, {"calibrate needs --measured"}},
       {"calibrate --measured " + csv + " --fit bogus" + o, {"--fit bogus", "abrasion,impact"}},
       {"compare" + o, {"compare needs two or more configurations"}},
+      // one file twice, under two names: two identical forecasts under one label (a review, 2026-12-07)
+      {"compare " + toml + " " + (dir / "." / "a.toml").string() + o,
+       {"the file is given twice (configurations 1 and 2): the two cases would be the same forecast"}},
       {"compare --vary foo" + o, {"--vary foo", "KEY=v1,v2"}},
       {"compare --vary liner.bogus=1,2" + o, {"unknown configuration key [liner] bogus"}},
       // a space before '=': "unknown configuration key [mill] speed_rpm ", the space unseen (a review, 2026-12-07)
