@@ -559,7 +559,10 @@ Config load_config_text(const std::string& text, const std::string& source, cons
               fmt::format("max_operating_hours = {} h ends on {}, at availability = {} from start_date = {}{}: a "
                           "relining date after 9999-12-31 cannot be written as a date; allowed max_operating_hours "
                           "<= {} h here, or {}",
-                          hours, iso_date(end), cal.availability, iso_date(cal.start),
+                          hours,
+                          cal.calendar_days_for(hours) > 365.2425e6 ? std::string("a date more than a million years ahead")
+                                                                    : iso_date(end),
+                          cal.availability, iso_date(cal.start),
                           cal.shutdowns.empty() ? "" : fmt::format(" with {} shutdown{}", cal.shutdowns.size(), cal.shutdowns.size() == 1 ? "" : "s"), h_text,
                           alternative));
     }

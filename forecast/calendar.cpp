@@ -165,7 +165,11 @@ double Calendar::operating_hours_after(double calendar_days) const {
 }
 
 CivilDate Calendar::date_after(double operating_hours) const {
-  const double days = calendar_days_for(operating_hours);
+  // at most about 8e8 years ahead, so that the day count and the year stay
+  // within their integers (availability = 1e-300 made 1e303 days, a cast
+  // out of range and the year +2030437328; the configuration refuses a date
+  // past 9999 anyway, and says "more than a million years" where it is)
+  const double days = std::min(calendar_days_for(operating_hours), 3e11);
   // the day on which the hours are complete (a day ending exactly at midnight counts as that day)
   const long long whole = static_cast<long long>(std::ceil(days)) - (days > 0 ? 1 : 0);
   return civil_from_days(days_from_civil(start) + whole);

@@ -368,6 +368,10 @@ TEST_CASE("a forecast horizon whose date would pass 9999-12-31 is refused", "[ap
     CHECK_NOTHROW(load_config_text(edited("forecast", "availability", "0.0007155"), "mill.toml", "."));
     refused(edited("forecast", "availability", "0.0007154"), {"cannot be written as a date"});
   }
+  // an availability so small that the date is beyond any calendar: said so,
+  // not a year wrapped round an integer (+2030437328 before 2026-12-07)
+  refused(edited("forecast", "availability", "1e-300"),
+          {"max_operating_hours = 50000 h ends on a date more than a million years ahead, at availability = 1e-300"});
   // a start late in the year 9999 leaves room for no default horizon
   refused(edited("forecast", "start_date", "9999-01-01"), {"max_operating_hours = 50000 h ends on +10005-"});
   // one shutdown or more, counted in words that agree ("with 1 shutdowns" before 2026-12-07)
