@@ -223,8 +223,8 @@ int run_calibrate(const CalibrateOptions& o) {
   const Calendar& cal_days = c.forecast.calendar;
   // A quantile at the horizon or beyond is a life the forecast did not reach
   // (the fitted run ended on the horizon, or the spread carries it past):
-  // as `linerlife forecast` does, no relining date for it, "" in --json
-  // (null) and "beyond DATE" in the text.
+  // as `linerlife forecast` does, no relining date for it: null in --json,
+  // "" in calibrate.h5, "beyond the horizon" in the text.
   auto beyond = [&](double remaining_h) { return q.criterion == "horizon" || remaining_h >= horizon_h; };
   auto date = [&](double remaining_h) {
     return beyond(remaining_h) ? std::string() : iso_date(cal_days.date_after(last.hours + remaining_h));

@@ -563,7 +563,10 @@ Config load_config_text(const std::string& text, const std::string& source, cons
                           cal.calendar_days_for(hours) > 365.2425e6 ? std::string("a date more than a million years ahead")
                                                                     : iso_date(end),
                           cal.availability, iso_date(cal.start),
-                          cal.shutdowns.empty() ? "" : fmt::format(" with {} shutdown{}", cal.shutdowns.size(), cal.shutdowns.size() == 1 ? "" : "s"), h_text,
+                          cal.shutdowns.empty() ? ""
+                                                : fmt::format(" with {} shutdown{}", cal.shutdowns.size(),
+                                                              cal.shutdowns.size() == 1 ? "" : "s"),
+                          h_text,
                           alternative));
     }
   }
