@@ -115,7 +115,7 @@ void check_fitted_factors(const Config& c, const std::array<double, 3>& s, const
 /// Where the configuration sets a key: "FILE:LINE", or "the default" where
 /// the file does not set it (messages that name a limit the user never wrote).
 std::string key_origin_text(const Config& c, const std::string& key) {
-  if (!c.key_lines.count(key) && !c.key_origin.count(key)) return "the default";
+  if (!key_given(c, key)) return "the default";
   std::string at = config_location(c, key);  // "FILE:LINE: "
   return at.substr(0, at.size() - 2);
 }

@@ -210,6 +210,10 @@ std::string config_location(const Config& c, const std::string& key) {
   return file + ": ";
 }
 
+bool key_given(const Config& c, const std::string& key) {
+  return c.key_lines.count(key) > 0 || c.key_origin.count(key) > 0;
+}
+
 namespace {
 
 /// Rethrows an InputError from a later check with the location of its key.
@@ -249,7 +253,7 @@ void check_and_resolve(Config& c) {
   // out gives the parametric lifter. Taken as no key, it ran the standard
   // lifter without a word (a review, 2026-12-07), as an empty CONFIG once ran
   // the bundled mill (docs/reliability.md).
-  if (c.profile_csv.empty() && (c.key_lines.count("liner.profile_csv") || c.key_origin.count("liner.profile_csv")))
+  if (c.profile_csv.empty() && key_given(c, "liner.profile_csv"))
     fail_at(c, "liner.profile_csv",
             "profile_csv = \"\": an empty path; allowed: the path of a measured profile CSV (docs/profile-csv.md), "
             "relative to this file; leave the key out for the parametric lifter");

@@ -144,4 +144,8 @@ std::string config_to_toml(const Config& c, bool annotate);
 /// key set by config_with(), where it was set ("--vary KEY=V: ").
 std::string config_location(const Config& c, const std::string& key);
 
+/// Whether the key "section.name" was set, by the file or by config_with()
+/// (--vary), rather than left at its default.
+bool key_given(const Config& c, const std::string& key);
+
 }  // namespace linerlife

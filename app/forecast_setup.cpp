@@ -119,12 +119,11 @@ std::string check_start_criteria(const Config& c, const LinerSurface& ring) {
   const std::vector<MetCriterion> all = criteria_met(c, ring);
   if (!all.empty()) {
     const MetCriterion& met = all.front();
-    auto is_default = [&](const std::string& key) { return !c.key_lines.count(key) && !c.key_origin.count(key); };
     std::vector<std::string> also, defaults;
     for (const MetCriterion& m : all) {
       if (m.name == "worn_through") continue;  // said by min_plate_thickness, whose key it shares
       if (m.name != met.name) also.push_back(fmt::format("{} ({})", m.name, m.limit));
-      if (is_default(m.key)) defaults.push_back(m.key.substr(m.key.find('.') + 1));
+      if (!key_given(c, m.key)) defaults.push_back(m.key.substr(m.key.find('.') + 1));
     }
     auto join = [](const std::vector<std::string>& v) {
       std::string t;
@@ -150,11 +149,10 @@ std::string check_start_criteria(const Config& c, const LinerSurface& ring) {
   // has no lifter to wear down: a height or face criterion given for it is
   // ignored, which is said, as a warning, for the keys the file or --vary set.
   if (has) return "";
-  auto given = [&](const char* key) { return c.key_lines.count(key) > 0 || c.key_origin.count(key) > 0; };
   std::string ignored;
-  if (given("forecast.min_lifter_height_m") && f.min_lifter_height_m > 0)
+  if (key_given(c, "forecast.min_lifter_height_m") && f.min_lifter_height_m > 0)
     ignored = fmt::format("min_lifter_height_m = {} m", f.min_lifter_height_m);
-  if (given("forecast.max_face_angle_leading_deg"))
+  if (key_given(c, "forecast.max_face_angle_leading_deg"))
     ignored += (ignored.empty() ? "" : " and ") + fmt::format("max_face_angle_leading_deg = {} deg",
                                                               f.max_face_angle_leading_deg);
   if (ignored.empty()) return "";
