@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <optional>
 
 #include <fmt/format.h>
@@ -45,7 +46,13 @@ CLI::Validator decimal_check(bool integer) {
         // the text itself after a check, and takes "010" for octal 8)
         double x = 0;
         const bool ok = parse_decimal(v, x) && (!integer || v.find_first_of(".eE") == std::string::npos);
-        if (ok && (!integer || std::abs(x) < 1e15)) {
+        // a count is read into an int: beyond its range CLI11 said only
+        // "Could not convert" (a review, 2026-12-07: --jobs 99999999999)
+        constexpr double kIntMax = std::numeric_limits<int>::max();
+        if (ok && integer && std::abs(x) > kIntMax)
+          return fmt::format("\"{}\" is out of range; allowed a whole number between -{:.0f} and {:.0f}", printable(v),
+                             kIntMax, kIntMax);
+        if (ok) {
           v = integer ? fmt::format("{:.0f}", x) : fmt::format("{}", x);
           return "";
         }

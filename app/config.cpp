@@ -87,7 +87,33 @@ std::string limit_text(double x, bool lower, int digits = 4) {
 /// with its decimal point; an integer key's refusal says how to write it).
 bool whole_float(double x) { return std::isfinite(x) && x == std::floor(x) && std::abs(x) < 1e15; }
 
-std::string node_text(const toml::node& n) {
+/// The start of each line of a configuration's text (for node_text()).
+std::vector<std::size_t> line_starts(const std::string& text) {
+  std::vector<std::size_t> starts{0};
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\n') starts.push_back(i + 1);
+  return starts;
+}
+
+/// A value as the user wrote it, or as close as can be said: a number is
+/// echoed as its text in the file where `text` and its `starts` are given
+/// (`segments = 6.4e1` was echoed "64.0", `filling = 0.49999999` "0.5"), other
+/// values and numbers without their text as toml++ reads them.
+std::string node_text(const toml::node& n, const std::string* text = nullptr,
+                      const std::vector<std::size_t>* starts = nullptr) {
+  if (text && starts && (n.is_integer() || n.is_floating_point())) {
+    const toml::source_region& r = n.source();
+    if (r.begin.line == r.end.line && r.begin.line >= 1 && r.begin.line <= starts->size() && r.begin.column >= 1 &&
+        r.end.column > r.begin.column) {
+      const std::size_t a = (*starts)[r.begin.line - 1] + r.begin.column - 1;
+      const std::size_t len = r.end.column - r.begin.column;
+      if (a + len <= text->size()) {
+        const std::string raw = text->substr(a, len);
+        if (raw.find_first_of(" \t\r\n#") == std::string::npos)
+          return raw.size() > 60 ? raw.substr(0, 57) + "..." : raw;
+      }
+    }
+  }
   std::ostringstream ss;
   n.visit([&](auto&& v) {
     using T = std::decay_t<decltype(v)>;
@@ -420,6 +446,7 @@ Config load_config_text(const std::string& text, const std::string& source, cons
                                          line_text.empty() ? "" : " in \"" + printable(line_text, 80) + "\"",
                                          std::string(e.description())));
   }
+  const std::vector<std::size_t> starts = line_starts(text);
   const Schema& schema = config_schema();
   std::set<std::string> known_sections(schema.sections.begin(), schema.sections.end());
 
@@ -476,7 +503,7 @@ Config load_config_text(const std::string& text, const std::string& source, cons
             // TOML allows year 0, which the calendar has not (it became 2000-01-01)
             if (!valid_date(dd.year, dd.month, dd.day))
               throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: allowed a date from 0001-01-01 to 9999-12-31",
-                                                 source, line, sname, kname, node_text(knode)));
+                                                 source, line, sname, kname, node_text(knode, &text, &starts)));
             v = ConfigValue::Date(iso_date({dd.year, dd.month, dd.day}));
             ok = true;
           }
@@ -496,14 +523,14 @@ Config load_config_text(const std::string& text, const std::string& source, cons
                 ? fmt::format(", without a decimal point ({} = {})", kname, static_cast<long long>(fp->get()))
                 : std::string();
         throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: expected {}{} ({})", source, line, sname, kname,
-                                           printable(node_text(knode)), kind_name(spec->kind), hint,
+                                           printable(node_text(knode, &text, &starts)), kind_name(spec->kind), hint,
                                            spec->allowed()));
       }
       const bool numeric = spec->kind == ConfigValue::Kind::Real || spec->kind == ConfigValue::Kind::Int;
       const double num = spec->kind == ConfigValue::Kind::Int ? static_cast<double>(v.integer) : v.real;
       if (numeric && !spec->accepts(num))
         throw InputError(full, fmt::format("{}:{}: [{}] {} = {}: out of range; allowed {}", source, line, sname, kname,
-                                           node_text(knode), spec->allowed()));
+                                           node_text(knode, &text, &starts), spec->allowed()));
       if (spec->kind == ConfigValue::Kind::String && !spec->choices.empty()) {
         bool found = false;
         for (auto& ch : spec->choices) found |= ch == v.text;
@@ -512,7 +539,7 @@ Config load_config_text(const std::string& text, const std::string& source, cons
                                              printable(v.text), spec->allowed()));
       }
       c.key_lines[full] = line;
-      c.key_text[full] = node_text(knode);
+      c.key_text[full] = node_text(knode, &text, &starts);
       spec->set(c, v);
     }
   }

@@ -49,7 +49,7 @@ struct Config {
   std::vector<std::string> notes;
 
   std::map<std::string, int> key_lines;  // "section.key" -> line in the source (1-based)
-  std::map<std::string, std::string> key_text;  // "section.key" -> its value as read (node_text(): 15.0 stays 15.0)
+  std::map<std::string, std::string> key_text;  // "section.key" -> its value as written (a number its text: 6.4e1)
   std::map<std::string, int> section_lines;
   // A configuration derived from a file by config_with() (compare --vary):
   // the file the lines above refer to, and where each changed key was set

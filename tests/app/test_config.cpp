@@ -115,6 +115,13 @@ TEST_CASE("syntax, unknown keys, types, ranges and missing keys are refused with
   // = 64: expected an integer", a review found) and how to write it
   refused(edited("liner", "segments", "64.0"),
           {"[liner] segments = 64.0: expected an integer, without a decimal point (segments = 64)"});
+  // a number is echoed as its text in the file (a review, 2026-12-07: 6.4e1
+  // was echoed "64.0", and 0.50000001 "0.5", a value the range allows)
+  refused(edited("liner", "segments", "6.4e1"),
+          {"[liner] segments = 6.4e1: expected an integer, without a decimal point (segments = 64)"});
+  refused(edited("charge", "filling", "0.50000001"),
+          {"[charge] filling = 0.50000001: out of range; allowed 0.01 <= value < 0.5"});
+  refused(edited("liner", "segments", "4_000"), {"[liner] segments = 4_000: out of range"});
   refused(edited("mill", "rotation", "1"), {"rotation", "expected a string", "\"ccw\", \"cw\""});
   refused(edited("mill", "rotation", "\"left\""), {"rotation = \"left\"", "one of \"ccw\", \"cw\""});
   refused(edited("mill", "diameter_m", "-3.0"), {"diameter_m = -3.0:", "out of range", "0.1 < value <= 15 m"});
@@ -198,7 +205,7 @@ TEST_CASE("the declared ranges are the ones that work", "[app][config][input]") 
   CHECK_NOTHROW(load_config_text(edited_text(removed("speed_rpm"), "mill", "speed_fraction_critical", "0.05"),
                                  "mill.toml", "."));
   // elements finer than 1 mm (1e-9 ended in bad_alloc)
-  refused(edited("liner", "element_size_m", "1e-9"), {"element_size_m = 1e-09: out of range", "0.001 <= value"});
+  refused(edited("liner", "element_size_m", "1e-9"), {"element_size_m = 1e-9: out of range", "0.001 <= value"});
   // DEM contacts: 1e-12 s hung, stiffness 1e-300 failed as a simulation
   const std::string dem = default_config_text() + "\n[dem]\n";
   refused(dem + "collision_time_s = 1e-12\n", {"collision_time_s = 1e-12: out of range", "1e-05 <= value <= 1 s"});
@@ -300,8 +307,8 @@ TEST_CASE("forecast dates, availability and shutdowns load and are checked", "[a
   // 1e-9 revolutions a step ran without end)
   refused(edited("forecast", "rtol", "1e-20"), {"rtol = 1e-20:", "1e-10 <= value <= 0.1"});
   refused(edited("forecast", "atol", "1e-20"), {"atol = 1e-20:", "1e-12 <= value <= 0.001"});
-  refused(edited("forecast", "refresh_tol_m", "1e-9"), {"refresh_tol_m = 1e-09:", "1e-05 <= value <= 0.05"});
-  refused(edited("forecast", "amplify_revolutions", "1e-9"), {"amplify_revolutions = 1e-09:", "0.1 <= value <= 100"});
+  refused(edited("forecast", "refresh_tol_m", "1e-9"), {"refresh_tol_m = 1e-9:", "1e-05 <= value <= 0.05"});
+  refused(edited("forecast", "amplify_revolutions", "1e-9"), {"amplify_revolutions = 1e-9:", "0.1 <= value <= 100"});
   CHECK(load_config_text(edited("forecast", "rtol", "1e-10"), "mill.toml", ".").forecast.rtol == 1e-10);  // the floor itself
 }
 
