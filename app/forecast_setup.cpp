@@ -207,6 +207,23 @@ std::vector<MetCriterion> criteria_met(const Config& c, const LinerSurface& ring
   return out;
 }
 
+std::string refresh_always_warning(const Config& c) {
+  const ForecastSpec& f = c.forecast;
+  if (!f.refresh_always || f.method != ForecastMethod::Ode || (c.model.charge != "layer" && c.model.charge != "dem"))
+    return "";
+  // The figures: `linerlife forecast --json` on the bundled mill with refresh
+  // = "always" (2026-12-07, the build of 4e858b5: 527 s of CPU, 7,483 drives,
+  // 6,674 h) against the default "auto" (97 drives, 6,696 h, about 6 s); the
+  // DEM's drives: docs/validation/speed-accuracy.md (35 in 1,115 s).
+  return fmt::format(
+      "{}refresh = \"always\" drives the {} charge model on every right-hand side the ODE solver evaluates: on the "
+      "bundled Qiu mill with the layer model that is 7,483 drives and 528 s, against 97 drives and about 6 s with "
+      "\"auto\", for a life 0.3 % shorter (6,674 against 6,696 h){}. It is meant for a fast model; \"auto\" with a "
+      "smaller refresh_tol_m converges the life at less cost (docs/models/forecast.md)",
+      config_location(c, "forecast.refresh"), c.model.charge,
+      c.model.charge == "dem" ? "; the DEM's drives take about 30 s each, so expect days" : "");
+}
+
 ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fitted, bool print_warnings) {
   // A coarse-grained DEM needs its largest disc under the lifter
   // (docs/models/dem.md §3); the forecast wears the lifter down to
@@ -229,6 +246,7 @@ ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fi
   s.surface = std::make_shared<LinerSurface>(build_liner_surface(c.mill, c.liner));
   s.warnings = wear_load_warnings(c, fitted);
   if (const std::string w = check_start_criteria(c, *s.surface); !w.empty()) s.warnings.push_back(w);
+  if (const std::string w = refresh_always_warning(c); !w.empty()) s.warnings.push_back(w);
   if (print_warnings)
     for (const std::string& m : s.warnings) std::cerr << "linerlife: warning: " << m << "\n";
   s.input.initial = s.surface.get();

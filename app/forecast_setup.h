@@ -48,6 +48,11 @@ std::vector<MetCriterion> criteria_met(const Config& c, const LinerSurface& ring
 /// prints them unless `print_warnings` is false (compare prints its cases'
 /// together: case_warning_lines()); `fitted`: the calibration factors the run
 /// fits (calibrate's --fit).
+/// A warning (without the prefix) for refresh = "always" with a charge model
+/// that takes long to drive (layer, dem): the forecast drives it thousands of
+/// times; "" otherwise.
+std::string refresh_always_warning(const Config& c);
+
 ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fitted = {false, false, false},
                                   bool print_warnings = true);
 

@@ -446,6 +446,25 @@ TEST_CASE("a forecast's start is checked against its criteria at set-up, and cri
   CHECK(make_forecast_setup(load_config_text(quiet, "mill.toml", "."), {false, false, false}, false).warnings.empty());
 }
 
+TEST_CASE("refresh = \"always\" with a slow charge model warns what it costs", "[app][config]") {
+  // a review (2026-12-07): the bundled mill ran over 300 s with no word
+  const std::string always = edited("forecast", "refresh", "\"always\"");
+  const ForecastSetup s = make_forecast_setup(load_config_text(always, "mill.toml", "."), {false, false, false}, false);
+  REQUIRE(s.warnings.size() == 1);
+  CHECK_THAT(s.warnings[0],
+             Catch::StartsWith("mill.toml:" + std::to_string(line_of(always, "refresh = \"always\"")) +
+                               ": refresh = \"always\" drives the layer charge model on every right-hand side"));
+  CHECK_THAT(s.warnings[0], Catch::Contains("7,483 drives and 528 s, against 97 drives and about 6 s"));
+  CHECK(refresh_always_warning(load_config_text(edited_text(always, "model", "charge", "\"dem\""), "mill.toml", "."))
+            .find("expect days") != std::string::npos);
+  // a fast model, "auto", or a method that does not re-drive: no warning
+  CHECK(refresh_always_warning(load_config_text(edited_text(always, "model", "charge", "\"empirical\""), "mill.toml",
+                                                ".")) == "");
+  CHECK(refresh_always_warning(load_default_config()) == "");
+  CHECK(refresh_always_warning(load_config_text(edited_text(always, "forecast", "method", "\"euler\""), "mill.toml",
+                                                ".")) == "");
+}
+
 TEST_CASE("an empty profile_csv is refused, and a path with control bytes is quoted printable", "[app][config][input]") {
   // An empty path is a script's unset variable: it ran the parametric lifter
   // without a word (a review, 2026-12-07)
