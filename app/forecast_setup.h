@@ -20,7 +20,7 @@ struct ForecastSetup {
   std::shared_ptr<LinerSurface> surface;    // the initial ring
   ForecastInput input;                      // points at *surface
   std::unique_ptr<RateProvider> provider;   // charge model + wear laws
-  std::vector<std::string> warnings;        // wear_load_warnings() of the configuration
+  std::vector<std::string> warnings;        // the set-up's warnings (make_forecast_setup())
 };
 
 /// A relining criterion a ring already meets: its name (as a forecast's
@@ -41,18 +41,19 @@ std::optional<MetCriterion> criterion_met(const Config& c, const LinerSurface& r
 /// Every relining criterion `ring` already meets, in criterion_met()'s order.
 std::vector<MetCriterion> criteria_met(const Config& c, const LinerSurface& ring);
 
-/// Throws InputError for a charge model that is not available, an
-/// incompatible wear law, a liner material out of range, or a DEM coarse
-/// enough that its discs would not fit under the lifter the forecast wears
-/// down to (naming the key). Keeps wear_load_warnings() in `warnings` and
-/// prints them unless `print_warnings` is false (compare prints its cases'
-/// together: case_warning_lines()); `fitted`: the calibration factors the run
-/// fits (calibrate's --fit).
 /// A warning (without the prefix) for refresh = "always" with a charge model
 /// that takes long to drive (layer, dem): the forecast drives it thousands of
 /// times; "" otherwise.
 std::string refresh_always_warning(const Config& c);
 
+/// Throws InputError for a charge model that is not available, an
+/// incompatible wear law, a liner material out of range, or a DEM coarse
+/// enough that its discs would not fit under the lifter the forecast wears
+/// down to (naming the key). Keeps the warnings of wear_load_warnings(), of
+/// the start against the criteria and of refresh_always_warning() in `warnings` and
+/// prints them unless `print_warnings` is false (compare prints its cases'
+/// together: case_warning_lines()); `fitted`: the calibration factors the run
+/// fits (calibrate's --fit).
 ForecastSetup make_forecast_setup(const Config& c, const std::array<bool, 3>& fitted = {false, false, false},
                                   bool print_warnings = true);
 
