@@ -1,5 +1,12 @@
 #include "app/h5_reader.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
 #include <H5Cpp.h>
 #include <fmt/format.h>
 
@@ -22,6 +29,24 @@ struct H5Reader::Impl {
 };
 
 H5Reader::H5Reader(const std::string& path) : path_(path) {
+  // Whether the file opens at all first, with the system's reason: HDF5's own
+  // failure says only that the open failed, which read as "not a readable
+  // HDF5 file" for a results file the user may not read (a review,
+  // 2026-12-07). HDF5 seeks, so only a regular file will do: on a named pipe
+  // its open waited for a writer without end (found with that review).
+  // O_NONBLOCK: the probe itself must not wait on a pipe.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    const int err = errno;
+    throw InputError(path, fmt::format("{} cannot be read: {}", path, std::strerror(err)));
+  }
+  struct stat st {};
+  const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+  ::close(fd);
+  if (!regular)
+    throw InputError(path, fmt::format("{} is not a regular file (a pipe, a device or a socket): give the HDF5 file "
+                                       "itself",
+                                       path));
   H5::Exception::dontPrint();
   try {
     impl_ = std::make_unique<Impl>(path);

@@ -10,7 +10,9 @@ namespace linerlife {
 
 class H5Reader {
  public:
-  /// Opens `path` read-only; throws InputError naming the file if it cannot.
+  /// Opens `path` read-only; throws InputError naming the file if it cannot:
+  /// with the system's reason where the file does not open at all
+  /// ("Permission denied"), else saying it is not a readable HDF5 file.
   explicit H5Reader(const std::string& path);
   ~H5Reader();
   bool exists(const std::string& path) const;

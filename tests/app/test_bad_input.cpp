@@ -148,7 +148,11 @@ TEST_CASE("input files that are devices or larger than 10 MB are refused naming 
       {"geometry " + (dir / "prof.toml").string(),
        {(dir / "prof.toml").string() + ":" + prof_line + ": ", "profile file /dev/zero is not a regular file"}},
       {"calibrate --measured /dev/zero", {"measured profile file /dev/zero is not a regular file"}},
+      // HDF5 seeks: a results file must be a file; on a named pipe `plot` waited without end (2026-12-07)
+      {"plot /dev/zero", {"/dev/zero is not a regular file (a pipe, a device or a socket): give the HDF5 file"}},
+      {"plot " + (dir / "pipe.h5").string(), {"pipe.h5 is not a regular file"}},
   };
+  REQUIRE(std::system(("mkfifo " + (dir / "pipe.h5").string()).c_str()) == 0);
   for (const Refusal& c : cases) check_refused(run_linerlife(c.args + " --out " + out.string(), 30), c, out);
   fs::remove_all(dir);
 }
@@ -829,6 +833,24 @@ TEST_CASE("an output folder that cannot be written, or a checkpoint that is not 
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(cp)) names.push_back(e.path().filename().string());
   CHECK(names == std::vector<std::string>{"checkpoint.h5"});
+
+  // an HDF5 file the user may not read: the system's reason, not "not a
+  // readable HDF5 file" (a review, 2026-12-07), for `plot` and for --resume
+  if (!can_drop_privileges()) {
+    WARN("running as root without setpriv: the unreadable results file is not checked");
+  } else {
+    open_to_all(dir);
+    open_to_all(dir / "geo");
+    fs::permissions(cp, fs::perms::all);  // --resume writes into it
+    fs::copy_file(dir / "geo" / "geometry.h5", cp / "checkpoint.h5", fs::copy_options::overwrite_existing);
+    fs::permissions(dir / "geo" / "geometry.h5", fs::perms::none);
+    fs::permissions(cp / "checkpoint.h5", fs::perms::none);
+    check_refused(run_unprivileged("plot " + (dir / "geo" / "geometry.h5").string() + " --out " + (dir / "p").string()),
+                  {"plot", {"geometry.h5 cannot be read: Permission denied"}}, dir / "p");
+    r = run_unprivileged("forecast --quiet --out " + cp.string() + " --resume");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("checkpoint.h5 cannot be read: Permission denied"));
+  }
   fs::remove_all(dir);
 }
 
