@@ -118,6 +118,36 @@ TEST_CASE("wear: the bundled mill runs, or says which charge model is missing", 
     CHECK_THAT(r.out, Catch::Contains(std::string("\"") + key + "\""));
 }
 
+// A review (2026-12-07): the bundled ball mill's file sets no amplification,
+// so `wear` ran at the built-in 1 and printed a deepest recession of 0.0000 m
+// without a word, where `linerlife defaults` shows the Qiu file's 1e6.
+TEST_CASE("wear: a file that sets no amplification is told that its wear run is not amplified",
+          "[app][cli][wear]") {
+  if (!has_model("layer")) return;
+  const std::string ball = std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/ball_mill_5m.toml";
+  const RunResult r = run_linerlife("wear " + ball + " --revolutions 0.2");
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.err, Catch::Contains("ball_mill_5m.toml sets neither [wear] amplification_abrasion nor "
+                                    "amplification_impact, so the wear is not amplified"));
+  CHECK_THAT(r.err, Catch::Contains("give --amplification"));
+  CHECK_THAT(r.out, Catch::Contains("amplification 1/1"));
+  // asked for on the command line, set in the file (the bundled mill), or set to 1 on purpose: no note
+  for (const std::string& args : {"wear " + ball + " --revolutions 0.2 --amplification 1e6",
+                                  std::string("wear --revolutions 0.05")}) {
+    const RunResult q = run_linerlife(args);
+    INFO(args << "\n" << q.err);
+    REQUIRE(q.code == 0);
+    CHECK_THAT(q.err, !Catch::Contains("not amplified"));
+  }
+  const fs::path dir = temp_dir("wear_amp_one");
+  REQUIRE(read_file(ball).find("\n[wear]") == std::string::npos);  // the file has no [wear] section
+  write_file(dir / "one.toml", read_file(ball) + "\n[wear]\namplification_abrasion = 1\n");
+  const RunResult one = run_linerlife("wear " + (dir / "one.toml").string() + " --revolutions 0.2");
+  REQUIRE(one.code == 0);
+  CHECK_THAT(one.err, !Catch::Contains("not amplified"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("wear: a run that wears through says how many revolutions it ran", "[app][cli][wear]") {
   // a review: at amplification 1e7 the bundled liner wears through after
   // 1.65 s of 3 revolutions (5.8 s each), and the header, the JSON and the
