@@ -41,7 +41,9 @@ void write_charge_h5(const std::string& path, const Config& c, const LinerSurfac
   const Indicators& I = r.indicators;
   h5.group("/charge");
   h5.attr("/charge", "model", r.model);
-  h5.attr("/charge", "variant", in.model.variant);
+  // the layer model's version only: the DEM's chart read "dem model, version
+  // 1.2" from it (a review, 2026-12-07)
+  if (r.model == "layer") h5.attr("/charge", "variant", in.model.variant);
   h5.attr("/charge", "rotation", std::string(c.mill.rotation == Rotation::Ccw ? "ccw" : "cw"));
   h5.attr("/charge", "angle_convention", std::string("degrees anticlockwise from 3 o'clock, physical mill frame"));
   const std::pair<const char*, double> scalars[] = {
@@ -185,6 +187,9 @@ int run_charge(const ChargeOptions& o) {
   for (const auto& n : r.notes) note("linerlife: note: " + n);
   const Indicators& I = r.indicators;
   const bool layer = r.model == "layer";
+  // a model with flights has a direct-impact fraction; Morrell's C-model has
+  // none (its 0 in charge.h5 is no measurement): null in --json, no line
+  const bool flights = r.model != "empirical";
   if (o.json) {
     Json speeds = Json::array();
     for (double v : I.layer_speed_rpm) speeds.push(v);
@@ -211,8 +216,12 @@ int run_charge(const ChargeOptions& o) {
         .set("n_layers", I.n_layers);
     if (I.n_trajectories >= 0) j.set("n_trajectories", I.n_trajectories);
     else j.set("n_trajectories", std::nan(""));
+    // docs/models/indicators.md's "also reported", as in charge.h5 (a review,
+    // 2026-12-07: the HDF5 file had them, --json not)
     j.set("charge_area_m2", I.charge_area_m2)
         .set("inner_radius_m", I.inner_radius_m)
+        .set("direct_impact_fraction", flights ? I.direct_impact_fraction : std::nan(""))
+        .set("media_diameter_m", c.charge.ball_diameter_m)
         .set("layer_speed_rpm", speeds)
         .set("simulated_s", r.stats.simulated_s)
         .set("wall_s", r.stats.wall_s)
@@ -254,6 +263,9 @@ int run_charge(const ChargeOptions& o) {
     std::cout << fmt::format("  layers / trajectories    {:>9} / {}\n", I.n_layers,
                              I.n_trajectories >= 0 ? std::to_string(I.n_trajectories) : "n/a");
     std::cout << fmt::format("  charge area (en masse)   {:>9.3f} m2\n", I.charge_area_m2);
+    if (flights)
+      std::cout << fmt::format("  direct liner impacts     {:>9.3f} of the charge landing from flight\n",
+                               I.direct_impact_fraction);
     std::string sp;
     for (double v : I.layer_speed_rpm) sp += fmt::format(" {:.2f}", v);
     std::cout << fmt::format("  layer speeds [rpm]      {}\n", sp.empty() ? " n/a" : sp);

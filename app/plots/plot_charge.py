@@ -35,7 +35,9 @@ def draw(h5, out):
     g = h5["/charge"]
     model = g.attrs["model"]
     model = model.decode() if isinstance(model, bytes) else str(model)
-    variant = g.attrs["variant"]
+    # the layer model's version (files of other models written before
+    # 2026-12-07 carry the configuration's, which means nothing for them)
+    variant = g.attrs.get("variant", "") if model == "layer" else ""
     variant = variant.decode() if isinstance(variant, bytes) else str(variant)
     toe, shoulder = _attr(g, "toe_deg"), _attr(g, "shoulder_deg")
     com_a, com_r = _attr(g, "com_angle_deg"), _attr(g, "com_radius_m")
@@ -66,7 +68,8 @@ def draw(h5, out):
                                  edgecolor="none", alpha=0.9, zorder=3)
             ax.add_collection(pc)
             ax.plot([], [], "o", color=colors[code], label=names[code])
-        title = f"{model} model, version {variant}: charge after {float(s['time_s'][-1]):.1f} s"
+        version = f", version {variant}" if variant else ""
+        title = f"{model} model{version}: charge after {float(s['time_s'][-1]):.1f} s"
     else:
         # the C-model's en-masse charge: the sector r_i < r < R, toe to shoulder
         ri = _attr(g, "inner_radius_m", 0.0)

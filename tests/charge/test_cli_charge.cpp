@@ -5,6 +5,7 @@
 #include <regex>
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include "../app/cli_runner.h"
 #include "app/config.h"
@@ -69,6 +70,16 @@ TEST_CASE("charge --json gives the contractual keys", "[charge][cli]") {
   CHECK(sh < 90);
   CHECK(json_number(r.out, "gross_power_kw") > json_number(r.out, "net_power_kw"));
   CHECK(json_number(r.out, "realtime_ratio") > 1);
+  // indicators.md's "also reported", as in charge.h5 (a review, 2026-12-07:
+  // only the HDF5 file had them); the text summary gives the fraction too
+  CHECK(json_number(r.out, "media_diameter_m") == 0.1333);  // data/mills/qiu2001_sag.toml
+  const double direct = json_number(r.out, "direct_impact_fraction");
+  CHECK(direct > 0.02);  // the Qiu mill throws some of its charge onto the liner (about 0.16)
+  CHECK(direct < 0.5);
+  const RunResult t = run_linerlife("charge --revolutions 1");
+  REQUIRE(t.code == 0);
+  CHECK_THAT(t.out, Catch::Contains(fmt::format("direct liner impacts     {:>9.3f} of the charge landing from flight",
+                                                direct)));
 }
 
 TEST_CASE("charge --model empirical --variant and the clockwise pilot mill", "[charge][cli]") {
@@ -76,6 +87,7 @@ TEST_CASE("charge --model empirical --variant and the clockwise pilot mill", "[c
   REQUIRE(r.code == 0);
   CHECK_THAT(r.out, Catch::Contains("\"model\": \"empirical\""));
   CHECK_THAT(r.out, Catch::Contains("\"n_trajectories\": null"));
+  CHECK_THAT(r.out, Catch::Contains("\"direct_impact_fraction\": null"));  // no flights in Morrell's model
   CHECK(json_number(r.out, "toe_deg") == Approx(240.44).margin(0.01));
   r = run_linerlife("charge " + std::string(LINERLIFE_SOURCE_DIR) +
                     "/data/mills/pilot_test_01.toml --variant 1.1 --revolutions 1 --json");
@@ -142,7 +154,8 @@ TEST_CASE("charge --out writes the results file and the charts", "[charge][cli]"
   CHECK(fs::exists(dir / "run" / "lifter_forces.png"));
   const std::string check =
       "/usr/bin/python3 -c \"import h5py,sys; f=h5py.File(sys.argv[1]); "
-      "c=f['charge']; assert c.attrs['model']=='layer'; assert 180<c.attrs['toe_deg']<270; "
+      "c=f['charge']; assert c.attrs['model']=='layer'; assert c.attrs['variant']=='1.2'; "
+      "assert 180<c.attrs['toe_deg']<270; "
       "assert f['snapshots/position_m'].shape[0]==36 and f['snapshots/position_m'].shape[2]==2; "
       "assert f['loads/normal_force_n_per_m'].shape[0]==f['surface/nodes'].shape[0]; "
       "assert len(f['loads/impacts/normal_speed_m_s'])>0; print('ok')\" " +
@@ -159,6 +172,12 @@ TEST_CASE("charge --out writes the results file and the charts", "[charge][cli]"
   REQUIRE(e.code == 0);
   CHECK(fs::exists(dir / "run" / "charge_snapshot.png"));
   CHECK_FALSE(fs::exists(dir / "run" / "lifter_forces.png"));
+  // the layer model's version is the layer model's only: the DEM's chart was
+  // titled "dem model, version 1.2" from it (a review, 2026-12-07)
+  const std::string no_variant = "/usr/bin/python3 -c \"import h5py,sys; c=h5py.File(sys.argv[1])['charge']; "
+                                 "assert c.attrs['model']=='empirical' and 'variant' not in c.attrs\" " +
+                                 (dir / "run" / "charge.h5").string();
+  CHECK(std::system(no_variant.c_str()) == 0);
   fs::remove_all(dir);
 }
 
