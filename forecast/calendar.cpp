@@ -175,4 +175,14 @@ CivilDate Calendar::date_after(double operating_hours) const {
   return civil_from_days(days_from_civil(start) + whole);
 }
 
+double shutdown_days_within(const Calendar& cal, double calendar_days) {
+  // The days the mill does not run for a shutdown are the days not worked at
+  // its availability: D - H(D) / (24 a), H the operating hours of the first D
+  // days (overlapping shutdowns count once); rounding below a microday is 0.
+  if (!(calendar_days > 0) || cal.shutdowns.empty()) return 0;
+  const double down = calendar_days - cal.operating_hours_after(calendar_days) / (24.0 * cal.availability);
+  const double rounded = std::round(down * 1e6) / 1e6;
+  return rounded > 0 ? rounded : 0;
+}
+
 }  // namespace linerlife

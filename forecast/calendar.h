@@ -40,4 +40,8 @@ struct Calendar {
   CivilDate date_after(double operating_hours) const;
 };
 
+/// The calendar days of planned shutdowns within the first `calendar_days`
+/// [d] from the start (a shutdown cut by the end counts its days before it).
+double shutdown_days_within(const Calendar& cal, double calendar_days);
+
 }  // namespace linerlife

@@ -652,6 +652,29 @@ TEST_CASE("compare --vary varies values that hold commas, written as TOML", "[ap
   fs::remove_all(dir);
 }
 
+// A review (2026-12-07): the summary rounded the calendar days to the whole
+// day (441.76 read as 442 beside a date 441 days on) and did not say that 14
+// of the 153 days of a 3,000 h life at 0.9 were a shutdown.
+TEST_CASE("forecast's summary gives the calendar days to a tenth and the shutdown days in them",
+          "[app][cli][forecast]") {
+  const fs::path dir = temp_dir("fc_calendar_days");
+  write_file(dir / "m.toml", fast_qiu("shutdowns = [{ start = 2027-02-01, days = 14 }]\n"));
+  const RunResult j = run_linerlife("forecast " + (dir / "m.toml").string() + " --json --quiet");
+  REQUIRE(j.code == 0);
+  const JsonValue v = parse_json(j.out);
+  const double days = v["calendar_days"].num();
+  REQUIRE(days > 45);  // past the shutdown's end (day 31 + 14)
+  const RunResult t = run_linerlife("forecast " + (dir / "m.toml").string() + " --quiet");
+  REQUIRE(t.code == 0);
+  CHECK_THAT(t.out, Catch::Contains(fmt::format("({:.1f} calendar days at", days)));
+  CHECK_THAT(t.out, Catch::Contains("availability, 14 of them shut down)"));
+  write_file(dir / "none.toml", fast_qiu());
+  const RunResult n = run_linerlife("forecast " + (dir / "none.toml").string() + " --quiet");
+  REQUIRE(n.code == 0);
+  CHECK_THAT(n.out, !Catch::Contains("shut down"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("compare of lifter designs by the layer model says its ranking is to be checked with the DEM",
           "[app][compare]") {
   const Config base = load_config_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/qiu2001_sag.toml");

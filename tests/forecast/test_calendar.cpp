@@ -34,6 +34,17 @@ TEST_CASE("availability and shutdowns stretch operating hours over the calendar"
   CHECK(c.calendar_days_for(21.6 * 10) == Approx(10 + 7));     // 4 days, 7 stopped, 6 more
   CHECK(c.operating_hours_after(17) == Approx(21.6 * 10));
   CHECK(iso_date(c.date_after(21.6 * 10)) == "2027-01-17");
+  // the shutdown days within a span (the forecast's summary says them)
+  CHECK(shutdown_days_within(c, 4) == 0);       // before the stop (Jan 5 is day 4)
+  CHECK(shutdown_days_within(c, 6.5) == 2.5);   // cut by the end: days 4, 5 and half of 6
+  CHECK(shutdown_days_within(c, 17) == 7);
+  CHECK(shutdown_days_within(c, 400) == 7);
+  c.shutdowns.push_back({{2027, 1, 8}, 7});     // overlaps the first from Jan 8: Jan 5-14 stopped
+  CHECK(shutdown_days_within(c, 400) == 10);
+  c.availability = 1.0;
+  CHECK(shutdown_days_within(c, 400) == 10);
+  c.shutdowns.clear();
+  CHECK(shutdown_days_within(c, 400) == 0);
 }
 
 TEST_CASE("a life of more than 1,000,000 calendar days is counted to its end", "[forecast][calendar]") {
