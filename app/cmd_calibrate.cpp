@@ -259,6 +259,7 @@ int run_calibrate(const CalibrateOptions& o) {
         .set("rms_per_profile_m", r.rms_per_snapshot_m)
         .set("converged", r.converged)
         .set("forecasts", r.forecasts + q.forecasts)
+        .set("fit_forecasts", r.forecasts)
         .set("last_measured_hours", last.hours)
         .set("remaining_hours_p10", q.p10_h)
         .set("remaining_hours_p50", q.p50_h)
@@ -279,8 +280,12 @@ int run_calibrate(const CalibrateOptions& o) {
                              "calibration_impact = {:.6g}\n",
                              cal.wear.calibration_centrifugal, cal.wear.calibration_gravitational,
                              cal.wear.calibration_impact);
-    std::cout << fmt::format("  RMS misfit {:.2f} mm (was {:.2f} mm with the given factors); {} forecasts\n",
-                             1000 * r.rms_m, 1000 * r.rms_initial_m, r.forecasts);
+    // every forecast the command ran, as --json's "forecasts" (a review,
+    // 2026-12-07: the text gave the fit's only, 19 where --json said 21)
+    std::cout << fmt::format("  RMS misfit {:.2f} mm (was {:.2f} mm with the given factors); {} forecasts ({} for the "
+                             "fit, {} for the remaining life)\n",
+                             1000 * r.rms_m, 1000 * r.rms_initial_m, r.forecasts + q.forecasts, r.forecasts,
+                             q.forecasts);
     if (due)
       std::cout << fmt::format("  remaining life from {} h: 0 h, due now ({}): the last measured profile meets {}\n",
                                last.hours, date(0), q.criterion);
