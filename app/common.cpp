@@ -380,10 +380,14 @@ std::string speed_trend_caveat(const std::vector<const Config*>& cases) {
   if (!v12 || cases.size() < 2 || !(hi > 1.01 * lo)) return "";
   // bench/operating_trend.py on the Qiu mill, 66 to 90 % of critical (the
   // layer column since 2026-12-06: `linerlife charge` at each speed)
-  return "the cases differ in mill speed, and the layer model (version 1.2) draws less power as the speed rises: on the "
-         "bundled Qiu mill -13 % from 66 to 90 % of critical, where the 2D DEM draws +41 % and Morrell's C-model +42 % "
-         "(version 1.2 within 10 % of the DEM only from about 74 to 82 %) (docs/validation/charge.md, \"Operating "
-         "trends\"). Read the speed's effect on power from [model] charge = \"empirical\" or \"dem\"";
+  // Not "draws less power as the speed rises": on other mills its power may
+  // rise with the speed, and the note read as contradicting the table beneath
+  // it (a review, 2026-12-07: the example ball mill at 14 and 15 rpm)
+  return "the cases differ in mill speed, and the layer model (version 1.2) does not give the speed's effect on power "
+         "reliably: on the bundled Qiu mill its power falls by 13 % from 66 to 90 % of critical, where the 2D DEM "
+         "draws +41 % and Morrell's C-model +42 % (version 1.2 within 10 % of the DEM only from about 74 to 82 %) "
+         "(docs/validation/charge.md, \"Operating trends\"). Read the speed's effect on power from [model] charge = "
+         "\"empirical\" or \"dem\"";
 }
 
 Json caveats_json(const std::vector<std::string>& caveats) {

@@ -717,6 +717,10 @@ TEST_CASE("compare of mill speeds by the layer model V-1.2 says its power goes t
   dem.model.charge = dem_faster.model.charge = "dem";
   const std::string c = speed_trend_caveat({&base, &faster});
   CHECK(c.find("docs/validation/charge.md, \"Operating trends\"") != std::string::npos);
+  // not a trend for every mill: on the example ball mill V-1.2's power rose
+  // with the speed under a note that said it falls (a review, 2026-12-07)
+  CHECK(c.find("does not give the speed's effect on power reliably: on the bundled Qiu mill") != std::string::npos);
+  CHECK(c.find("draws less power as the speed rises") == std::string::npos);
   CHECK(speed_trend_caveat({&dem, &base, &dem_faster}) == c);  // one V-1.2 case is enough
   CHECK(speed_trend_caveat({&base, &slightly}).empty());
   CHECK(speed_trend_caveat({&v10, &v10_faster}).empty());
