@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
 #include <cctype>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -849,6 +851,69 @@ TEST_CASE("compare runs its forecasts at once with the results of one after the 
   // the three designs differ, so a case's result cannot have gone to another
   CHECK(cases[0]["operating_hours"].num() != cases[1]["operating_hours"].num());
   CHECK(cases[1]["operating_hours"].num() != cases[2]["operating_hours"].num());
+  fs::remove_all(dir);
+}
+
+// The README's bundled calibration example (data/measured/qiu2001_synthetic_scans.csv)
+// is the bundled forecast's own profiles at every calibration factor 1.3. The
+// model moved them by 6.6 mm rms at 4,000 h between 2026-12-05 and
+// 2026-12-07, and the example's fit stalled (exit 3) with nothing to say so
+// until a review followed the README; its run (about 100 s) is too long for
+// this suite, so this checks the cause: the file against the model's forecast
+// of today (docs/measured-profiles.md, "The example goes stale with the model").
+TEST_CASE("the bundled example scans are the bundled forecast's profiles at factor 1.3", "[app][cli][calibrate]") {
+  const fs::path dir = temp_dir("fc_example_scans");
+  std::string t = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/qiu2001_sag.toml");
+  for (const char* k : {"calibration_centrifugal", "calibration_gravitational", "calibration_impact"}) {
+    const std::regex line(std::string("\n") + k + " = [^\n]*\n");
+    if (std::regex_search(t, line)) t = std::regex_replace(t, line, std::string("\n") + k + " = 1.3\n");
+    else t = std::regex_replace(t, std::regex("\\[wear\\]\n"), std::string("[wear]\n") + k + " = 1.3\n");
+  }
+  write_file(dir / "k13.toml", t);
+  const RunResult f = run_linerlife("forecast " + (dir / "k13.toml").string() + " --quiet --out " +
+                                    (dir / "fc").string(), 300);
+  INFO(f.err);
+  REQUIRE(f.code == 0);
+  const H5Reader h5((dir / "fc" / "forecast.h5").string());
+  const auto ph = h5.doubles("/forecast/profiles/hours");
+  const auto xy = h5.doubles("/forecast/profiles/nodes");
+  const auto off = h5.ints("/forecast/profiles/offset");
+  const double R = h5.attr_double("/surface", "shell_radius_m");
+  const double seg = 2 * M_PI / static_cast<double>(h5.attr_int("/surface", "segments"));
+  // the scans, by their hours
+  std::map<double, std::vector<Eigen::Vector2d>> scans;
+  std::istringstream in(read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/measured/qiu2001_synthetic_scans.csv"));
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#' || line.rfind("hours", 0) == 0) continue;
+    double h, x, y;
+    REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf", &h, &x, &y) == 3);
+    scans[h].emplace_back(x, y);
+  }
+  REQUIRE(scans.size() == 2);
+  for (const auto& [hours, pts] : scans) {
+    size_t i = 0;  // the forecast's profile nearest the scan's hours (bench/scan_from_forecast.py)
+    for (size_t k = 1; k < ph.size(); ++k)
+      if (std::abs(ph[k] - hours) < std::abs(ph[i] - hours)) i = k;
+    std::vector<Eigen::Vector2d> nodes;
+    for (long long k = off[i]; k < off[i + 1]; ++k) nodes.emplace_back(xy[2 * k], xy[2 * k + 1]);
+    const auto p = segment_to_profile_xy(nodes, R, 0.0, seg);
+    REQUIRE(p.size() >= 2);
+    double sum = 0;
+    for (const Eigen::Vector2d& q : pts) {  // each scan point's distance to the forecast's profile
+      double best = 1e9;
+      for (size_t k = 0; k + 1 < p.size(); ++k) {
+        const Eigen::Vector2d ab = p[k + 1] - p[k];
+        const double u = std::clamp((q - p[k]).dot(ab) / std::max(ab.squaredNorm(), 1e-30), 0.0, 1.0);
+        best = std::min(best, (q - (p[k] + u * ab)).norm());
+      }
+      sum += best * best;
+    }
+    const double rms = std::sqrt(sum / static_cast<double>(pts.size()));
+    INFO("scan at " << hours << " h: rms " << 1000 * rms << " mm from the forecast at " << ph[i]
+                    << " h; remake the file with the commands in its header (docs/measured-profiles.md)");
+    CHECK(std::abs(ph[i] - hours) < 1.0);
+    CHECK(rms < 1e-3);  // 1 mm: the fit's own floor on its own scans is 0.87 mm
+  }
   fs::remove_all(dir);
 }
 
