@@ -23,8 +23,6 @@ struct GeometryOptions {
   std::string out;
 };
 
-std::string fmt_opt(double v, const char* f) { return std::isfinite(v) ? fmt::format(fmt::runtime(f), v) : "n/a"; }
-
 int run_geometry(const GeometryOptions& o) {
   const Config c = load_config_or_default(o.config);
   if (!o.out.empty()) check_output_dir_writable(o.out, {"geometry.h5"});
@@ -65,11 +63,21 @@ int run_geometry(const GeometryOptions& o) {
     std::cout << fmt::format("Liner of {} ({} rows{}, {} rotation)\n", c.source, s.segments,
                              c.liner.hi_lo ? ", hi-lo" : "", c.mill.rotation == Rotation::Ccw ? "anticlockwise" : "clockwise");
     std::cout << fmt::format("  lifter height above plate   {:>9.4f} m\n", s0.lifter_height_m);
-    std::cout << fmt::format("  leading face angle          {:>9} deg from the radial\n",
-                             fmt_opt(s0.face_angle_leading_deg, "{:.2f}"));
-    std::cout << fmt::format("  trailing face angle         {:>9} deg from the radial\n",
-                             fmt_opt(s0.face_angle_trailing_deg, "{:.2f}"));
-    std::cout << fmt::format("  top width                   {:>9} m\n", fmt_opt(s0.top_width_m, "{:.4f}"));
+    // a plain plate has no faces nor top: "n/a (no lifter)", not "n/a deg" (a review, 2026-12-07)
+    auto value = [](double v, const char* f, const char* unit) {
+      return std::isfinite(v) ? fmt::format("{:>9} {}", fmt::format(fmt::runtime(f), v), unit)
+                              : fmt::format("{:>9} (no lifter)", "n/a");
+    };
+    std::cout << fmt::format("  leading face angle          {}\n",
+                             value(s0.face_angle_leading_deg, "{:.2f}", "deg from the radial"));
+    std::cout << fmt::format("  trailing face angle         {}\n",
+                             value(s0.face_angle_trailing_deg, "{:.2f}", "deg from the radial"));
+    std::cout << fmt::format("  top width                   {}\n", value(s0.top_width_m, "{:.4f}", "m"));
+    if (c.liner.hi_lo && m.segments.size() > 1) {  // as --json's low_lifter_height_m, low_top_width_m
+      const SegmentMetrics& s1 = m.segments[1];
+      std::cout << fmt::format("  low lifter height           {:>9.4f} m\n", s1.lifter_height_m);
+      std::cout << fmt::format("  low lifter top width        {}\n", value(s1.top_width_m, "{:.4f}", "m"));
+    }
     std::cout << fmt::format("  minimum plate thickness     {:>9.4f} m\n", m.min_thickness_m);
     // three figures on a laboratory mill (a review, 2026-12-06: "0.0 t")
     const double ring_t = m.mass_kg_per_m * c.mill.length_m / 1000.0;

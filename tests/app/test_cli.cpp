@@ -65,6 +65,31 @@ TEST_CASE("geometry on the bundled mill reports its metrics", "[app][cli]") {
   CHECK(json_number(r.out, "n_surface_elements") > 1000);
 }
 
+// A review (2026-12-07): a plain plate's summary read "n/a deg from the
+// radial", and a hi-lo liner's left out the low lifters --json gives.
+TEST_CASE("geometry's summary says a plain plate has no lifter and gives a hi-lo liner's low lifters",
+          "[app][cli]") {
+  const fs::path dir = temp_dir("geometry_summary");
+  const std::string defaults = run_linerlife("defaults").out;
+  write_file(dir / "flat.csv", "0,0.075\n0.25,0.075\n0.508618,0.075\n");
+  write_file(dir / "flat.toml", std::regex_replace(defaults, std::regex("\n\\[liner\\]\n"),
+                                                   "\n[liner]\nprofile_csv = \"" + (dir / "flat.csv").string() + "\"\n"));
+  RunResult r = run_linerlife("geometry " + (dir / "flat.toml").string());
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out, Catch::Contains("leading face angle                n/a (no lifter)\n"));
+  CHECK_THAT(r.out, Catch::Contains("top width                         n/a (no lifter)\n"));
+  CHECK_THAT(r.out, !Catch::Contains("n/a deg") && !Catch::Contains("n/a m"));
+  write_file(dir / "hilo.toml", std::regex_replace(defaults, std::regex("\npattern = [^\n]*\n"),
+                                                   "\npattern = \"hi-lo\"\nlow_lifter_height_m = 0.15\n"
+                                                   "low_lifter_top_width_m = 0.12\n"));
+  r = run_linerlife("geometry " + (dir / "hilo.toml").string());
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out, Catch::Contains("low lifter height              0.1500 m\n"));
+  CHECK_THAT(r.out, Catch::Contains("low lifter top width           0.1200 m\n"));
+  CHECK_THAT(run_linerlife("geometry").out, !Catch::Contains("low lifter"));  // a uniform ring has none
+  fs::remove_all(dir);
+}
+
 TEST_CASE("the defaults file runs to the same result as the bundled mill", "[app][cli]") {
   const fs::path dir = temp_dir("defaults");
   RunResult d = run_linerlife("defaults");
