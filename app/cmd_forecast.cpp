@@ -254,8 +254,9 @@ int run_forecast_command(const ForecastOptions& o) {
                                   ? fmt::format("{} CVODE steps", f.stats.cvode_steps)
                                   : fmt::format("{} {} step{}", f.stats.explicit_steps, method_name(c.forecast.method),
                                                 f.stats.explicit_steps == 1 ? "" : "s");
-    std::cout << fmt::format("  effort                   {} charge drives, {} remeshes, {}, {:.1f} s wall\n",
-                             f.stats.charge_redrives, f.stats.remeshes, steps, f.stats.wall_s);
+    std::cout << fmt::format("  effort                   {} charge drive{}, {} remesh{}, {}, {:.1f} s wall\n",
+                             f.stats.charge_redrives, f.stats.charge_redrives == 1 ? "" : "s", f.stats.remeshes,
+                             f.stats.remeshes == 1 ? "" : "es", steps, f.stats.wall_s);
   }
   // after the summary it qualifies (its net power line)
   std::cout.flush();

@@ -670,6 +670,10 @@ TEST_CASE("forecast's summary gives the calendar days to a tenth and the shutdow
   REQUIRE(t.code == 0);
   CHECK_THAT(t.out, Catch::Contains(fmt::format("({:.1f} calendar days at", days)));
   CHECK_THAT(t.out, Catch::Contains("availability, 14 of them shut down)"));
+  // the effort line's counts, in the singular where there is one ("1 remeshes": the same review)
+  const int drives = static_cast<int>(v["charge_redrives"].num()), remeshes = static_cast<int>(v["remeshes"].num());
+  CHECK_THAT(t.out, Catch::Contains(fmt::format("{} charge drive{}, {} remesh{},", drives, drives == 1 ? "" : "s",
+                                                remeshes, remeshes == 1 ? "" : "es")));
   write_file(dir / "none.toml", fast_qiu());
   const RunResult n = run_linerlife("forecast " + (dir / "none.toml").string() + " --quiet");
   REQUIRE(n.code == 0);
