@@ -141,8 +141,9 @@ std::vector<Case> vary_cases(const Config& base, const std::vector<std::string>&
       throw InputError("--vary", fmt::format("--vary {}: \"{}\" is not a key; write it as section.key, e.g. "
                                              "liner.face_angle_leading_deg", v, a.key));
     if (!config_schema().find(a.key.substr(0, dot), a.key.substr(dot + 1)))
-      throw InputError("--vary", fmt::format("--vary {}: unknown configuration key [{}] {}", v, a.key.substr(0, dot),
-                                             a.key.substr(dot + 1)));
+      throw InputError("--vary", fmt::format("--vary {}: unknown configuration key [{}] {}; {}", v,
+                                             a.key.substr(0, dot), a.key.substr(dot + 1),
+                                             known_keys_text(a.key.substr(0, dot))));
     if (v.back() == ',') throw InputError("--vary", fmt::format("--vary {}: an empty value", v));
     // the mill's speed is one setting, given in rpm or as a fraction of critical
     auto same = [](const std::string& x, const std::string& y) {

@@ -1,5 +1,6 @@
 #include "app/config.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -240,6 +241,18 @@ bool key_given(const Config& c, const std::string& key) {
   return c.key_lines.count(key) > 0 || c.key_origin.count(key) > 0;
 }
 
+std::string known_keys_text(const std::string& section) {
+  const Schema& schema = config_schema();
+  std::string list;
+  if (std::find(schema.sections.begin(), schema.sections.end(), section) == schema.sections.end()) {
+    for (const auto& s : schema.sections) list += (list.empty() ? "[" : ", [") + s + "]";
+    return "the sections are " + list;
+  }
+  for (const auto& k : schema.keys)
+    if (k.section == section) list += (list.empty() ? "" : ", ") + k.name;
+  return fmt::format("the keys of [{}] are: {}", section, list.empty() ? "(none yet)" : list);
+}
+
 namespace {
 
 /// Rethrows an InputError from a later check with the location of its key.
@@ -454,10 +467,8 @@ Config load_config_text(const std::string& text, const std::string& source, cons
     const std::string sname(skey.str());
     const int sline = static_cast<int>(snode.source().begin.line);
     if (!known_sections.count(sname)) {
-      std::string list;
-      for (auto& s : schema.sections) list += (list.empty() ? "[" : ", [") + s + "]";
-      throw InputError(sname, fmt::format("{}:{}: unknown section or top-level key \"{}\"; the sections are {}", source,
-                                          sline, printable(sname), list));
+      throw InputError(sname, fmt::format("{}:{}: unknown section or top-level key \"{}\"; {}", source, sline,
+                                          printable(sname), known_keys_text(sname)));
     }
     const toml::table* t = snode.as_table();
     if (!t)
@@ -469,14 +480,9 @@ Config load_config_text(const std::string& text, const std::string& source, cons
       const int line = static_cast<int>(knode.source().begin.line);
       const KeySpec* spec = schema.find(sname, kname);
       const std::string full = sname + "." + kname;
-      if (!spec) {
-        std::string list;
-        for (const auto& k : schema.keys)
-          if (k.section == sname) list += (list.empty() ? "" : ", ") + k.name;
-        throw InputError(full, fmt::format("{}:{}: unknown key [{}] {} (a misspelling?); the keys of [{}] are: {}",
-                                           source, line, sname, printable(kname), sname,
-                                           list.empty() ? "(none yet)" : list));
-      }
+      if (!spec)
+        throw InputError(full, fmt::format("{}:{}: unknown key [{}] {} (a misspelling?); {}", source, line, sname,
+                                           printable(kname), known_keys_text(sname)));
       ConfigValue v;
       bool ok = false;
       switch (spec->kind) {

@@ -104,6 +104,10 @@ struct Schema {
 /// The schema: the sections and keys of every module, in order.
 const Schema& config_schema();
 
+/// What an unknown key's message lists: "the keys of [mill] are: diameter_m,
+/// ..." for a known section, else "the sections are [mill], [charge], ...".
+std::string known_keys_text(const std::string& section);
+
 // One function per section adds its keys (config_schema_<section>.cpp).
 void add_mill_keys(Schema& s);
 void add_charge_keys(Schema& s);

@@ -366,7 +366,11 @@ TEST_CASE("command-line usage errors exit 2 naming the option and its value", "[
       {"compare " + toml + " " + (dir / "." / "a.toml").string() + o,
        {"the file is given twice (configurations 1 and 2): the two cases would be the same forecast"}},
       {"compare --vary foo" + o, {"--vary foo", "KEY=v1,v2"}},
-      {"compare --vary liner.bogus=1,2" + o, {"unknown configuration key [liner] bogus"}},
+      // with the section's keys, or the sections, as the configuration loader gives them (a review, 2026-12-07)
+      {"compare --vary liner.bogus=1,2" + o,
+       {"unknown configuration key [liner] bogus; the keys of [liner] are: segments,", "lifter_height_m"}},
+      {"compare --vary mil.speed_rpm=1,2" + o,
+       {"unknown configuration key [mil] speed_rpm; the sections are [mill], [charge], [liner]"}},
       // a space before '=': "unknown configuration key [mill] speed_rpm ", the space unseen (a review, 2026-12-07)
       {"compare --vary \"mill.speed_rpm = 10, 9\"" + o,
        {"--vary mill.speed_rpm = 10, 9: the key \"mill.speed_rpm \" has a space in it", "without spaces around '='"}},
