@@ -50,6 +50,33 @@ bool python_charts_available() {
 
 bool is_iso_date(const std::string& s) { return std::regex_match(s, std::regex("\\d{4}-\\d{2}-\\d{2}")); }
 
+/// The profiles of segment 0 a forecast wrote (forecast.h5, /forecast/profiles),
+/// each in the unrolled frame of docs/profile-csv.md, with their hours.
+struct ForecastProfiles {
+  std::vector<double> hours;
+  std::vector<std::vector<Eigen::Vector2d>> profile;
+};
+
+/// Runs `linerlife forecast CONFIG --quiet --out OUT` and reads its profiles.
+ForecastProfiles forecast_profiles(const fs::path& config, const fs::path& out) {
+  const RunResult f = run_linerlife("forecast " + config.string() + " --quiet --out " + out.string(), 300);
+  INFO(f.err);
+  REQUIRE(f.code == 0);
+  const H5Reader h5((out / "forecast.h5").string());
+  const auto xy = h5.doubles("/forecast/profiles/nodes");
+  const auto off = h5.ints("/forecast/profiles/offset");
+  const double R = h5.attr_double("/surface", "shell_radius_m");
+  const double seg = 2 * M_PI / static_cast<double>(h5.attr_int("/surface", "segments"));
+  ForecastProfiles fp;
+  fp.hours = h5.doubles("/forecast/profiles/hours");
+  for (size_t i = 0; i < fp.hours.size(); ++i) {
+    std::vector<Eigen::Vector2d> nodes;
+    for (long long k = off[i]; k < off[i + 1]; ++k) nodes.emplace_back(xy[2 * k], xy[2 * k + 1]);
+    fp.profile.push_back(segment_to_profile_xy(nodes, R, 0.0, seg));
+  }
+  return fp;
+}
+
 /// The caveats of `linerlife forecast FILE --json --out OUT` whose text
 /// contains `key`, each checked to be on stderr and in OUT/forecast.h5's
 /// `caveat` attribute as well (the three places a caveat goes).
@@ -874,16 +901,8 @@ TEST_CASE("the bundled example scans are the bundled forecast's profiles at fact
     else t = std::regex_replace(t, std::regex("\\[wear\\]\n"), std::string("[wear]\n") + k + " = 1.3\n");
   }
   write_file(dir / "k13.toml", t);
-  const RunResult f = run_linerlife("forecast " + (dir / "k13.toml").string() + " --quiet --out " +
-                                    (dir / "fc").string(), 300);
-  INFO(f.err);
-  REQUIRE(f.code == 0);
-  const H5Reader h5((dir / "fc" / "forecast.h5").string());
-  const auto ph = h5.doubles("/forecast/profiles/hours");
-  const auto xy = h5.doubles("/forecast/profiles/nodes");
-  const auto off = h5.ints("/forecast/profiles/offset");
-  const double R = h5.attr_double("/surface", "shell_radius_m");
-  const double seg = 2 * M_PI / static_cast<double>(h5.attr_int("/surface", "segments"));
+  const ForecastProfiles fp = forecast_profiles(dir / "k13.toml", dir / "fc");
+  const std::vector<double>& ph = fp.hours;
   // the scans, by their hours
   std::map<double, std::vector<Eigen::Vector2d>> scans;
   std::istringstream in(read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/measured/qiu2001_synthetic_scans.csv"));
@@ -898,9 +917,7 @@ TEST_CASE("the bundled example scans are the bundled forecast's profiles at fact
     size_t i = 0;  // the forecast's profile nearest the scan's hours (bench/scan_from_forecast.py)
     for (size_t k = 1; k < ph.size(); ++k)
       if (std::abs(ph[k] - hours) < std::abs(ph[i] - hours)) i = k;
-    std::vector<Eigen::Vector2d> nodes;
-    for (long long k = off[i]; k < off[i + 1]; ++k) nodes.emplace_back(xy[2 * k], xy[2 * k + 1]);
-    const auto p = segment_to_profile_xy(nodes, R, 0.0, seg);
+    const std::vector<Eigen::Vector2d>& p = fp.profile[i];
     REQUIRE(p.size() >= 2);
     double sum = 0;
     for (const Eigen::Vector2d& q : pts) {  // each scan point's distance to the forecast's profile
@@ -927,23 +944,14 @@ TEST_CASE("calibrate recovers the wear factor of synthetic scans from the comman
   const std::string k13 = "calibration_centrifugal = 1.3\ncalibration_gravitational = 1.3\ncalibration_impact = 1.3\n";
   write_file(dir / "true.toml", fast_qiu("output_interval_h = 500\n", k13));
   write_file(dir / "m.toml", fast_qiu("output_interval_h = 500\n"));
-  const RunResult f = run_linerlife("forecast " + (dir / "true.toml").string() + " --quiet --out " +
-                                    (dir / "truth").string());
-  INFO(f.err);
-  REQUIRE(f.code == 0);
-  const H5Reader h5((dir / "truth" / "forecast.h5").string());
-  const auto ph = h5.doubles("/forecast/profiles/hours");
-  const auto xy = h5.doubles("/forecast/profiles/nodes");
-  const auto off = h5.ints("/forecast/profiles/offset");
-  const double R = h5.attr_double("/surface", "shell_radius_m");
+  const ForecastProfiles fp = forecast_profiles(dir / "true.toml", dir / "truth");
+  const std::vector<double>& ph = fp.hours;
   std::ofstream csv(dir / "scans.csv");
   csv << "# synthetic scans: forecast with calibration factors 1.3\nhours,x_m,y_m\n";
   int scans = 0;
   for (size_t i = 1; i < ph.size() && scans < 2; ++i) {
     if (ph[i] < 900) continue;  // two scans, well into the life
-    std::vector<Eigen::Vector2d> nodes;
-    for (long long k = off[i]; k < off[i + 1]; ++k) nodes.emplace_back(xy[2 * k], xy[2 * k + 1]);
-    const auto p = segment_to_profile_xy(nodes, R, 0.0, 2 * M_PI / 64);
+    const std::vector<Eigen::Vector2d>& p = fp.profile[i];
     for (size_t k = 0; k < p.size(); ++k)  // every second node, and both ends of the segment
       if (k % 2 == 0 || k + 1 == p.size()) csv << ph[i] << "," << p[k].x() << "," << p[k].y() << "\n";
     ++scans;
