@@ -231,7 +231,8 @@ int run_forecast_command(const ForecastOptions& o) {
     // date 441 days on, and 153 days for 3,000 h at 0.9 as if the 14 days of a
     // shutdown were not in them (a review, 2026-12-07).
     const double down = shutdown_days_within(c.forecast.calendar, f.calendar_days);
-    std::cout << fmt::format("  operating hours          {:>10.0f} h from {} ({:.1f} calendar days at {} availability{})\n",
+    std::cout << fmt::format("  operating hours          {:>10.0f} h from {} ({:.1f} calendar days at {} "
+                             "availability{})\n",
                              f.operating_hours, iso_date(c.forecast.calendar.start), f.calendar_days,
                              c.forecast.calendar.availability,
                              down > 0 ? fmt::format(", {:g} of them shut down", down) : "");

@@ -57,7 +57,7 @@ bool has_kind(const WearSpec& spec, WearKind kind) {
 
 /// A note where the wear run is not amplified because nothing asked for it:
 /// a file without [wear] amplification_abrasion / amplification_impact (the
-/// bundled ball mill) ran at the built-in 1 and wore a few grams without a
+/// bundled ball mill) ran at the built-in 1 and wore 1 g per metre without a
 /// word (a review, 2026-12-07). The thesis' coupled run amplifies the wear
 /// (Table B.1); the bundled Qiu file sets 1e6.
 std::optional<std::string> unamplified_note(const Config& c, bool cli_amplification) {
@@ -66,9 +66,9 @@ std::optional<std::string> unamplified_note(const Config& c, bool cli_amplificat
   if (c.wear.amplification_abrasion != 1.0 || c.wear.amplification_impact != 1.0) return std::nullopt;
   return fmt::format(
       "{} sets neither [wear] amplification_abrasion nor amplification_impact, so the wear is not amplified (the "
-      "built-in 1): {} revolutions wear the liner as {} revolutions of the mill do, a few grams. The coupled wear run "
-      "amplifies the wear to show how the profile moves (thesis Table B.1; the bundled Qiu file sets 1e6): set them, "
-      "or give --amplification. For the liner's life, run `linerlife forecast`.",
+      "built-in 1): {} revolutions wear the liner as {} revolutions of the mill do, next to nothing. The coupled wear "
+      "run amplifies the wear to show how the profile moves (thesis Table B.1; the bundled Qiu file sets 1e6): set "
+      "them, or give --amplification. For the liner's life, run `linerlife forecast`.",
       c.source, c.wear.revolutions, c.wear.revolutions);
 }
 

@@ -18,7 +18,8 @@ Config config_with(const Config& c, const std::string& section_key, const std::s
   const std::string sec = section_key.substr(0, dot), key = section_key.substr(dot + 1);
   const KeySpec* spec = config_schema().find(sec, key);
   if (!spec)
-    throw InputError(what, fmt::format("{}: unknown configuration key [{}] {}; {}", what, sec, key, known_keys_text(sec)));
+    throw InputError(what,
+                     fmt::format("{}: unknown configuration key [{}] {}; {}", what, sec, key, known_keys_text(sec)));
   // A string key's value from the command line comes without TOML's quotes
   // (--vary mill.rotation=ccw,cw): quote it, unless it is quoted already.
   std::string toml_value = value;

@@ -72,8 +72,8 @@ TEST_CASE("geometry's summary says a plain plate has no lifter and gives a hi-lo
   const fs::path dir = temp_dir("geometry_summary");
   const std::string defaults = run_linerlife("defaults").out;
   write_file(dir / "flat.csv", "0,0.075\n0.25,0.075\n0.508618,0.075\n");
-  write_file(dir / "flat.toml", std::regex_replace(defaults, std::regex("\n\\[liner\\]\n"),
-                                                   "\n[liner]\nprofile_csv = \"" + (dir / "flat.csv").string() + "\"\n"));
+  const std::string csv_line = "profile_csv = \"" + (dir / "flat.csv").string() + "\"\n";
+  write_file(dir / "flat.toml", std::regex_replace(defaults, std::regex("\n\\[liner\\]\n"), "\n[liner]\n" + csv_line));
   RunResult r = run_linerlife("geometry " + (dir / "flat.toml").string());
   REQUIRE(r.code == 0);
   CHECK_THAT(r.out, Catch::Contains("leading face angle                n/a (no lifter)\n"));
