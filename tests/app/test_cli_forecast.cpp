@@ -5,9 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <algorithm>
 #include <cctype>
-#include <map>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -18,7 +16,9 @@
 
 #include "app/commands.h"
 #include "app/h5_reader.h"
+#include "forecast/calibrate.h"
 #include "forecast/forecast.h"
+#include "forecast/measured_history.h"
 #include "cli_runner.h"
 #include "geometry/measured_profile.h"
 #include "geometry/resample.h"
@@ -55,6 +55,9 @@ bool is_iso_date(const std::string& s) { return std::regex_match(s, std::regex("
 struct ForecastProfiles {
   std::vector<double> hours;
   std::vector<std::vector<Eigen::Vector2d>> profile;
+  std::vector<std::vector<Eigen::Vector2d>> nodes;  // the same in the mill frame, as the file holds them
+  double shell_radius_m = 0;
+  int segments = 0;
 };
 
 /// Runs `linerlife forecast CONFIG --quiet --out OUT` and reads its profiles.
@@ -65,14 +68,15 @@ ForecastProfiles forecast_profiles(const fs::path& config, const fs::path& out) 
   const H5Reader h5((out / "forecast.h5").string());
   const auto xy = h5.doubles("/forecast/profiles/nodes");
   const auto off = h5.ints("/forecast/profiles/offset");
-  const double R = h5.attr_double("/surface", "shell_radius_m");
-  const double seg = 2 * M_PI / static_cast<double>(h5.attr_int("/surface", "segments"));
   ForecastProfiles fp;
+  fp.shell_radius_m = h5.attr_double("/surface", "shell_radius_m");
+  fp.segments = static_cast<int>(h5.attr_int("/surface", "segments"));
   fp.hours = h5.doubles("/forecast/profiles/hours");
   for (size_t i = 0; i < fp.hours.size(); ++i) {
     std::vector<Eigen::Vector2d> nodes;
     for (long long k = off[i]; k < off[i + 1]; ++k) nodes.emplace_back(xy[2 * k], xy[2 * k + 1]);
-    fp.profile.push_back(segment_to_profile_xy(nodes, R, 0.0, seg));
+    fp.profile.push_back(segment_to_profile_xy(nodes, fp.shell_radius_m, 0.0, 2 * M_PI / fp.segments));
+    fp.nodes.push_back(std::move(nodes));
   }
   return fp;
 }
@@ -903,36 +907,22 @@ TEST_CASE("the bundled example scans are the bundled forecast's profiles at fact
   write_file(dir / "k13.toml", t);
   const ForecastProfiles fp = forecast_profiles(dir / "k13.toml", dir / "fc");
   const std::vector<double>& ph = fp.hours;
-  // the scans, by their hours
-  std::map<double, std::vector<Eigen::Vector2d>> scans;
-  std::istringstream in(read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/measured/qiu2001_synthetic_scans.csv"));
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#' || line.rfind("hours", 0) == 0) continue;
-    double h, x, y;
-    REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf", &h, &x, &y) == 3);
-    scans[h].emplace_back(x, y);
-  }
-  REQUIRE(scans.size() == 2);
-  for (const auto& [hours, pts] : scans) {
+  // the scans as calibrate reads them, measured against each profile as its fit measures them
+  const MeasuredHistory scans = load_measured_history(std::string(LINERLIFE_SOURCE_DIR) +
+                                                      "/data/measured/qiu2001_synthetic_scans.csv");
+  REQUIRE(scans.snapshots.size() == 2);
+  for (const MeasuredSnapshot& m : scans.snapshots) {
     size_t i = 0;  // the forecast's profile nearest the scan's hours (bench/scan_from_forecast.py)
     for (size_t k = 1; k < ph.size(); ++k)
-      if (std::abs(ph[k] - hours) < std::abs(ph[i] - hours)) i = k;
-    const std::vector<Eigen::Vector2d>& p = fp.profile[i];
-    REQUIRE(p.size() >= 2);
+      if (std::abs(ph[k] - m.hours) < std::abs(ph[i] - m.hours)) i = k;
+    const std::vector<double> r =
+        profile_residuals(unrolled_to_mill(m.points, fp.shell_radius_m, fp.segments), fp.nodes[i]);
     double sum = 0;
-    for (const Eigen::Vector2d& q : pts) {  // each scan point's distance to the forecast's profile
-      double best = 1e9;
-      for (size_t k = 0; k + 1 < p.size(); ++k) {
-        const Eigen::Vector2d ab = p[k + 1] - p[k];
-        const double u = std::clamp((q - p[k]).dot(ab) / std::max(ab.squaredNorm(), 1e-30), 0.0, 1.0);
-        best = std::min(best, (q - (p[k] + u * ab)).norm());
-      }
-      sum += best * best;
-    }
-    const double rms = std::sqrt(sum / static_cast<double>(pts.size()));
-    INFO("scan at " << hours << " h: rms " << 1000 * rms << " mm from the forecast at " << ph[i]
+    for (double x : r) sum += x * x;
+    const double rms = std::sqrt(sum / static_cast<double>(r.size()));
+    INFO("scan at " << m.hours << " h: rms " << 1000 * rms << " mm from the forecast at " << ph[i]
                     << " h; remake the file with the commands in its header (docs/measured-profiles.md)");
-    CHECK(std::abs(ph[i] - hours) < 1.0);
+    CHECK(std::abs(ph[i] - m.hours) < 1.0);
     CHECK(rms < 1e-3);  // 1 mm: the fit's own floor on its own scans is 0.87 mm
   }
   fs::remove_all(dir);
