@@ -248,8 +248,16 @@ int run_forecast_command(const ForecastOptions& o) {
                              last.min_thickness_m);
     // to the kW on a plant mill, to three figures on a laboratory one (a
     // review, 2026-12-06: "0 kW -> 0 kW" for a 0.2 m mill)
-    std::cout << fmt::format("  net power                {:>10} kW -> {} kW\n", num_or_3g(first.net_power_kw, 100, "{:.0f}"),
-                             num_or_3g(last.net_power_kw, 100, "{:.0f}"));
+    // a drive averages more revolutions than `charge` does by default, so its
+    // power differs from charge's by the sampling (a review, 2026-12-07: 1,702
+    // against 1,734 kW on a ball mill, with no word why)
+    // (the amplify method's later drives average amplify_revolutions: no note)
+    const std::string averaged =
+        c.forecast.method != ForecastMethod::Amplify
+            ? fmt::format(" (each the mean of a drive's {:g} revolutions)", c.forecast.revolutions_per_drive)
+            : "";
+    std::cout << fmt::format("  net power                {:>10} kW -> {} kW{}\n", num_or_3g(first.net_power_kw, 100, "{:.0f}"),
+                             num_or_3g(last.net_power_kw, 100, "{:.0f}"), averaged);
     // the ode method's steps are CVODE's, the explicit methods' their own
     const std::string steps = c.forecast.method == ForecastMethod::Ode
                                   ? fmt::format("{} CVODE steps", f.stats.cvode_steps)
