@@ -932,7 +932,7 @@ TEST_CASE("the bundled example scans are the bundled forecast's profiles at fact
     INFO("scan at " << m.hours << " h: rms " << 1000 * rms << " mm from the forecast at " << ph[i]
                     << " h; remake the file with the commands in its header (docs/measured-profiles.md)");
     CHECK(std::abs(ph[i] - m.hours) < 1.0);
-    CHECK(rms < 1e-3);  // 1 mm: the fit's own floor on its own scans is 0.87 mm
+    CHECK(rms < 1e-3);  // 1 mm, what a scan resolves: the example must be the model's own forecast
   }
   fs::remove_all(dir);
 }
