@@ -433,7 +433,7 @@ void register_compare(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--vary", o->vary,
                   "KEY=v1,v2,... one key (section.key) over several values (a string key's without quotes: "
                   "mill.rotation=ccw,cw; a value holding commas as TOML: wear.laws=\"a/b\",\"a/b, c/d\"); "
-                  "repeated: every combination")
+                  "repeated: every combination (a repeated KEY=v with one value sets that key in every case)")
       ->expected(1)
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
