@@ -256,8 +256,9 @@ int run_forecast_command(const ForecastOptions& o) {
         c.forecast.method != ForecastMethod::Amplify
             ? fmt::format(" (each the mean of a drive's {:g} revolutions)", c.forecast.revolutions_per_drive)
             : "";
-    std::cout << fmt::format("  net power                {:>10} kW -> {} kW{}\n", num_or_3g(first.net_power_kw, 100, "{:.0f}"),
-                             num_or_3g(last.net_power_kw, 100, "{:.0f}"), averaged);
+    std::cout << fmt::format("  net power                {:>10} kW -> {} kW{}\n",
+                             num_or_3g(first.net_power_kw, 100, "{:.0f}"), num_or_3g(last.net_power_kw, 100, "{:.0f}"),
+                             averaged);
     // the ode method's steps are CVODE's, the explicit methods' their own
     const std::string steps = c.forecast.method == ForecastMethod::Ode
                                   ? fmt::format("{} CVODE steps", f.stats.cvode_steps)

@@ -263,11 +263,23 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
   // step no longer lowers the misfit, or moves the factors by less than a
   // fine step; then fine ones. Where no step along a fine slope lowers the
   // misfit though the slope promises a gain, that slope may be the
-  // ruggedness: the coarse slope is tried again (`recheck`); a step it finds
-  // goes on from there, and where it finds none either, its promise judges
-  // the minimum.
+  // ruggedness: the coarse slope is tried again (`recheck`), unless it
+  // already failed at this very point; a step it finds goes on from there,
+  // and where it finds none, its promise judges the minimum.
   enum class Scale { coarse, fine, recheck } scale = Scale::coarse;
   double fine_promise = 0;  // [m] the rms the fine slope promised before a recheck
+  // where the coarse scale found no step: the point, and its slope's verdict
+  Eigen::VectorXd coarse_failed_at;
+  bool coarse_failed_stationary = false;
+  double coarse_failed_promise = 0;
+  bool last_improved = true;
+  // the verdict where neither slope finds a step: the coarse one judges;
+  // a stall reports the smaller of the two slopes' promises
+  auto judge_by_coarse = [&](bool coarse_stationary, double coarse_promise) {
+    res.converged = coarse_stationary;
+    res.stalled = !coarse_stationary;
+    res.promised_rms_m = coarse_stationary ? coarse_promise : std::min(coarse_promise, fine_promise);
+  };
   for (int it = 0; it < p.max_iterations; ++it) {
     res.iterations = it + 1;
     h = scale == Scale::fine ? kFineStep : kCoarseStep;
@@ -300,22 +312,26 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
         lambda *= 4;
       }
     }
+    last_improved = improved;
     if (scale != Scale::fine) {
       if (improved) {
         scale = small ? Scale::fine : Scale::coarse;
         if (small) lambda = 1e-3;  // a new scale starts afresh
         continue;
       }
-      if (scale == Scale::coarse) {  // the coarse scale has done what it can: on to the fine one
-        scale = Scale::fine;
-        lambda = 1e-3;
-        continue;
+      double promise = 0;
+      const bool at_minimum = stationary(J, r, rss, m, promise);
+      if (scale == Scale::recheck) {
+        judge_by_coarse(at_minimum, promise);
+        break;
       }
-      // a recheck found no step either: the coarse slope's promise judges
-      res.converged = stationary(J, r, rss, m, res.promised_rms_m);
-      if (!res.converged) res.promised_rms_m = std::min(res.promised_rms_m, fine_promise);
-      res.stalled = !res.converged;
-      break;
+      // the coarse scale has done what it can: on to the fine one
+      coarse_failed_at = theta;
+      coarse_failed_stationary = at_minimum;
+      coarse_failed_promise = promise;
+      scale = Scale::fine;
+      lambda = 1e-3;
+      continue;
     }
     if (improved) {
       if (small) {
@@ -336,10 +352,22 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
       res.promised_rms_m = fine_promise;
       break;
     }
+    if (coarse_failed_at.size() == theta.size() && coarse_failed_at == theta) {
+      judge_by_coarse(coarse_failed_stationary, coarse_failed_promise);  // a recheck would repeat it
+      break;
+    }
     scale = Scale::recheck;
     lambda = 1e-3;
   }
   h = kFineStep;
+  // Out of iterations just after a scale found no step: nothing moves, so
+  // it is a minimum or a stall, judged as a fine failure is (not "still
+  // moving", a review found).
+  if (!res.converged && !res.stalled && !last_improved) {
+    jacobian();
+    res.converged = stationary(J, r, rss, m, res.promised_rms_m);
+    res.stalled = !res.converged;
+  }
   res.rms_m = std::sqrt(rss / m);
   res.params = exp_of(theta);
   if (res.stalled) {  // no optimum to take a covariance at (require_converged() says so)

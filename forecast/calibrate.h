@@ -43,8 +43,8 @@ struct CalibrationResult {
   int forecasts = 0;
   int iterations = 0;
   bool converged = false;
-  bool stalled = false;        // no step lowered the misfit, though the linear model promised a gain
-  double promised_rms_m = 0;   // [m] the rms the linear model promised where the fit stalled
+  bool stalled = false;        // no step lowered the misfit, though the linear models promised a gain
+  double promised_rms_m = 0;   // [m] the rms the linear models promised where the fit stalled (the smaller)
 };
 
 /// Fits p.names to p.measured. Throws InputError naming p.measured.source
@@ -52,11 +52,15 @@ struct CalibrationResult {
 /// (check_history_has_wear), or a Jacobian of the residuals without full
 /// column rank (a factor that does not change the forecast profiles, or
 /// changes them only as the others do), naming the factor(s); never a sigma
-/// of 0 for an undetermined factor. A fit that stalls (no step lowers the
-/// misfit, though the Gauss-Newton model promises to lower its rms by more
-/// than 5 % and 0.1 mm), or that runs out of iterations where the model at
-/// its last point still promises that much, is returned with `converged`
-/// false (`stalled` for the first); require_converged() refuses it.
+/// of 0 for an undetermined factor. The slopes are finite differences over
+/// 10 % of each factor first, then over 2 % (docs/measured-profiles.md, "Two
+/// scales of slope"). A fit that stalls (no step along either slope lowers
+/// the misfit, though the Gauss-Newton model of the 10 % slope promises to
+/// lower its rms by more than 5 % and 0.1 mm; `promised_rms_m` the smaller
+/// of the two slopes' promises), or that runs out of iterations where the
+/// 2 % model at its last point still promises that much, is returned with
+/// `converged` false (`stalled` for the first, and for the second where
+/// its last iteration found no step); require_converged() refuses it.
 CalibrationResult calibrate(const CalibrationProblem& p);
 
 /// Throws SimulationError (exit 3) naming p.measured.source, the factors, the
