@@ -18,8 +18,9 @@ import h5py
 import numpy as np
 
 
-def main():
-    path, hours, label, step = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), int(sys.argv[4])
+def segment0_unrolled(path, hours):
+    """Segment 0 of the profile nearest `hours` in forecast.h5 `path`, in the
+    unrolled frame: (x, y, the profile's hours)."""
     with h5py.File(path, "r") as f:
         hrs = f["forecast/profiles/hours"][:]
         off = f["forecast/profiles/offset"][:]
@@ -32,10 +33,16 @@ def main():
     th = np.where(th > math.pi, th - 2 * math.pi, th)
     x = R * th + math.pi * R / segments  # segment 0 spans -seg/2 .. seg/2
     y = R - np.hypot(pts[:, 0], pts[:, 1])
+    return x, y, hrs[i]
+
+
+def main():
+    path, hours, label, step = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), int(sys.argv[4])
+    x, y, at = segment0_unrolled(path, hours)
     keep = list(range(0, len(x), step))
     if keep[-1] != len(x) - 1:
         keep.append(len(x) - 1)
-    print("# segment 0 of %s at %g h, labelled %g h, every %d-th node" % (path, hrs[i], label, step))
+    print("# segment 0 of %s at %g h, labelled %g h, every %d-th node" % (path, at, label, step))
     print("hours,x_m,y_m")
     for k in keep:
         print("%g,%.6f,%.6f" % (label, x[k], y[k]))

@@ -233,7 +233,8 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
   // impact factor) is that ruggedness, not the trend. On the bundled example
   // scans, made at every factor 1.3, the 2 % slope alone ended at abrasion
   // 1.315, impact 0.886, rms 0.87 mm, and called it a minimum; the rms at
-  // impact 1.1 is 0.53 mm and at 1.3 0.14 mm (docs/measured-profiles.md).
+  // abrasion 1.315, impact 1.1 is 0.53 mm, and at every factor 1.3 0.14 mm
+  // (docs/measured-profiles.md, bench/misfit_at_factors.py).
   // Slopes over 10 % follow the trend to the valley first; the 2 % ones then
   // settle the fit, judge its minimum (or its stall) and give the
   // covariance, as before.
