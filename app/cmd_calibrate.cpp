@@ -5,9 +5,11 @@
 // the calibrated configuration, and forecasts the rest of the life from the
 // last measurement with a P10/P50/P90 relining date
 // (docs/measured-profiles.md, docs/models/forecast.md).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <iostream>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -138,6 +140,22 @@ void check_history_within_horizon(const Config& c, const MeasuredHistory& h, con
       measured, last.first_line, last.hours, horizon, key_origin_text(c, "forecast.max_operating_hours"), horizon));
 }
 
+/// The misfit's correlation along the scans, and the ratio of the sigmas to
+/// independent points'
+/// (serial_covariance(), docs/measured-profiles.md, "How far the factors can
+/// be trusted").
+std::string correlation_text(const CalibrationResult& r) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0;
+  for (size_t i = 0; i < r.sigma_log.size(); ++i) {
+    const double w = r.sigma_log_independent[i] > 0 ? r.sigma_log[i] / r.sigma_log_independent[i] : 1.0;
+    lo = std::min(lo, w);
+    hi = std::max(hi, w);
+  }
+  const std::string widen = hi - lo < 0.005 ? fmt::format("{:.2f}", hi) : fmt::format("{:.2f}-{:.2f}", lo, hi);
+  return fmt::format("misfit correlated along the scans with lag-1 {:.2f}: sigmas x{} those of independent points",
+                     r.residual_lag1, widen);
+}
+
 int run_calibrate(const CalibrateOptions& o) {
   const Config c = load_config_or_default(o.config);
   if (o.measured.empty()) throw InputError("--measured", "calibrate needs --measured FILE.csv (docs/measured-profiles.md)");
@@ -245,7 +263,11 @@ int run_calibrate(const CalibrateOptions& o) {
   if (o.json) {
     Json params = Json::array();
     for (size_t i = 0; i < ps.size(); ++i)
-      params.push(Json::object().set("name", ps[i].name).set("factor", r.params[i]).set("sigma_ln", r.sigma_log[i]));
+      params.push(Json::object()
+                      .set("name", ps[i].name)
+                      .set("factor", r.params[i])
+                      .set("sigma_ln", r.sigma_log[i])
+                      .set("sigma_ln_independent", r.sigma_log_independent[i]));
     Json j = Json::object();
     j.set("config", c.source)
         .set("measured", o.measured)
@@ -257,6 +279,7 @@ int run_calibrate(const CalibrateOptions& o) {
         .set("rms_initial_m", r.rms_initial_m)
         .set("rms_m", r.rms_m)
         .set("rms_per_profile_m", r.rms_per_snapshot_m)
+        .set("residual_lag1", r.residual_lag1)
         .set("converged", r.converged)
         .set("forecasts", r.forecasts + q.forecasts)
         .set("fit_forecasts", r.forecasts)
@@ -276,6 +299,7 @@ int run_calibrate(const CalibrateOptions& o) {
     for (size_t i = 0; i < ps.size(); ++i)
       std::cout << fmt::format("  {:<14} factor {:.4g}  (1-sigma x/ {:.3f})\n", ps[i].name, r.params[i],
                                std::exp(r.sigma_log[i]));
+    std::cout << "  " << correlation_text(r) << "\n";
     std::cout << fmt::format("  calibration_centrifugal = {:.6g}, calibration_gravitational = {:.6g}, "
                              "calibration_impact = {:.6g}\n",
                              cal.wear.calibration_centrifugal, cal.wear.calibration_gravitational,
@@ -303,6 +327,7 @@ int run_calibrate(const CalibrateOptions& o) {
     for (size_t i = 0; i < ps.size(); ++i)
       head += fmt::format("#   {}: factor {:.4g}, 1-sigma x/ {:.3f} (sigma_ln {:.4g})\n", ps[i].name, r.params[i],
                           std::exp(r.sigma_log[i]), r.sigma_log[i]);
+    head += "#   " + correlation_text(r) + "\n";
     head += fmt::format("#   RMS misfit {:.2f} mm (was {:.2f} mm with the given factors){}\n", 1000 * r.rms_m,
                         1000 * r.rms_initial_m, r.converged ? "" : "; the fit did not converge");
     head += due ? fmt::format("#   remaining life from {} h: 0 h, due now ({})\n", last.hours, q.criterion)
@@ -317,6 +342,7 @@ int run_calibrate(const CalibrateOptions& o) {
       h5.group("/calibrate");
       h5.attr("/calibrate", "rms_m", r.rms_m);
       h5.attr("/calibrate", "rms_initial_m", r.rms_initial_m);
+      h5.attr("/calibrate", "residual_lag1", r.residual_lag1);
       h5.attr("/calibrate", "remaining_hours_p10", q.p10_h);
       h5.attr("/calibrate", "remaining_hours_p50", q.p50_h);
       h5.attr("/calibrate", "remaining_hours_p90", q.p90_h);
@@ -335,15 +361,17 @@ int run_calibrate(const CalibrateOptions& o) {
       h5.attr("/calibrate", "calibration_impact", cal.wear.calibration_impact);
       {
         std::string names;
-        std::vector<double> factor, sigma;
+        std::vector<double> factor, sigma, sigma_independent;
         for (size_t i = 0; i < ps.size(); ++i) {
           names += (i ? "\n" : "") + ps[i].name;
           factor.push_back(r.params[i]);
           sigma.push_back(r.sigma_log[i]);
+          sigma_independent.push_back(r.sigma_log_independent[i]);
         }
         h5.attr("/calibrate", "parameters", names);  // one name per line, in the order of factor and sigma_ln
         h5.dataset("/calibrate/factor", factor, {factor.size()}, "-");
         h5.dataset("/calibrate/sigma_ln", sigma, {sigma.size()}, "-");
+        h5.dataset("/calibrate/sigma_ln_independent", sigma_independent, {sigma_independent.size()}, "-");
         h5.dataset("/calibrate/rms_per_profile_m", r.rms_per_snapshot_m, {r.rms_per_snapshot_m.size()}, "m");
       }
       for (size_t i = 0; i < h.snapshots.size(); ++i) {

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <Eigen/Dense>
 #include <fmt/format.h>
@@ -178,6 +179,47 @@ std::vector<double> exp_of(const Eigen::VectorXd& theta) {
 }
 
 }  // namespace
+
+SerialCovariance serial_covariance(const Eigen::MatrixXd& J, const Eigen::VectorXd& r, const std::vector<int>& runs) {
+  const Eigen::Index m = r.size(), np = J.cols();
+  // where each run starts in r
+  std::vector<Eigen::Index> start{0};
+  for (int n : runs) start.push_back(start.back() + n);
+  if (start.back() != m || J.rows() != m || m <= np)
+    throw std::invalid_argument(fmt::format("serial_covariance: {} residuals in runs of {} points, a Jacobian of "
+                                            "{} x {}",
+                                            m, start.back(), J.rows(), np));
+  const size_t nruns = runs.size();
+  double num = 0, den = r.squaredNorm();
+  for (size_t k = 0; k < nruns; ++k)
+    for (Eigen::Index t = start[k] + 1; t < start[k + 1]; ++t) num += r(t) * r(t - 1);
+  SerialCovariance out;
+  // below 1 (Cauchy-Schwarz; a run's ends pair once); below 0 (neighbours
+  // alternating) taken as 0
+  out.lag1 = den > 0 ? std::clamp(num / den, 0.0, 1.0) : 0.0;
+  const double rho = out.lag1;
+  const double s2 = den / static_cast<double>(m - np);
+  const Eigen::MatrixXd Ainv = (J.transpose() * J).inverse();
+  out.covariance_independent = s2 * Ainv;
+  // R J, R the run-wise matrix of rho^|i-k|: a forward and a backward
+  // first-order recursion per column (f_i = x_i + rho f_i-1, b_i = x_i + rho
+  // b_i+1, (R x)_i = f_i + b_i - x_i), O(m) instead of O(m^2)
+  Eigen::MatrixXd RJ(m, np);
+  for (Eigen::Index c = 0; c < np; ++c)
+    for (size_t k = 0; k < nruns; ++k) {
+      double f = 0, b = 0;
+      for (Eigen::Index t = start[k]; t < start[k + 1]; ++t) {
+        f = J(t, c) + rho * f;
+        RJ(t, c) = f;
+      }
+      for (Eigen::Index t = start[k + 1] - 1; t >= start[k]; --t) {
+        b = J(t, c) + rho * b;
+        RJ(t, c) += b - J(t, c);
+      }
+    }
+  out.covariance = s2 * Ainv * (J.transpose() * RJ) * Ainv;
+  return out;
+}
 
 void check_history_has_wear(const MeasuredHistory& h) {
   for (const auto& m : h.snapshots)
@@ -375,15 +417,22 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
     res.forecasts = fit.forecasts;
     return res;
   }
-  // covariance of ln(parameters) at the optimum: s^2 (J^T J)^-1, with J re-evaluated there
+  // covariance of ln(parameters) at the optimum (serial_covariance()), with J re-evaluated there
   jacobian();
   // Out of iterations and still moving: a minimum after all where the model
   // at the last point promises as little as a stall's test allows (a misfit
   // creeping by the forecasts' own noise), otherwise not converged.
   if (!res.converged) res.converged = stationary(J, r, rss, m, res.promised_rms_m);
   check_determined(J, p);
-  const double s2 = rss / static_cast<double>(m - np);
-  res.covariance_log = s2 * (J.transpose() * J).inverse();
+  // residuals correlated along a scan (a misfit of the model's, smooth along
+  // the profile) are fewer independent measurements than points
+  std::vector<int> runs;
+  for (const auto& snap : p.measured.snapshots) runs.push_back(static_cast<int>(snap.points.size()));
+  const SerialCovariance sc = serial_covariance(J, r, runs);
+  res.covariance_log = sc.covariance;
+  res.residual_lag1 = sc.lag1;
+  for (int j = 0; j < np; ++j)
+    res.sigma_log_independent.push_back(std::sqrt(std::max(0.0, sc.covariance_independent(j, j))));
   for (int j = 0; j < np; ++j) {
     const double v = res.covariance_log(j, j);
     if (!(std::isfinite(v) && v >= 0))  // check_determined() should have caught it; never a sigma of 0 for it

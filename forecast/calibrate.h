@@ -35,8 +35,10 @@ struct CalibrationProblem {
 
 struct CalibrationResult {
   std::vector<double> params;         // fitted values
-  std::vector<double> sigma_log;      // 1-sigma of ln(parameter)
-  Eigen::MatrixXd covariance_log;     // of ln(parameters)
+  std::vector<double> sigma_log;      // 1-sigma of ln(parameter), from covariance_log
+  Eigen::MatrixXd covariance_log;     // of ln(parameters), for residuals correlated along a scan (serial_covariance)
+  std::vector<double> sigma_log_independent;  // 1-sigma of ln(parameter) were every measured point independent
+  double residual_lag1 = 0;           // lag-1 autocorrelation of the residuals along the scans, in [0, 1)
   double rms_m = 0;                   // [m] RMS distance of the measured points to the fitted profiles
   double rms_initial_m = 0;           // [m] with the initial parameters
   std::vector<double> rms_per_snapshot_m;
@@ -46,6 +48,32 @@ struct CalibrationResult {
   bool stalled = false;        // no step lowered the misfit, though the linear models promised a gain
   double promised_rms_m = 0;   // [m] the rms the linear models promised where the fit stalled (the smaller)
 };
+
+/// The covariance of least-squares parameters whose residuals are correlated
+/// along each scan (docs/measured-profiles.md, "How far the factors can be
+/// trusted"). The residuals r (Jacobian J: residuals x parameters) come in
+/// runs, one per scan, each in the order of its points. A misfit the model
+/// makes along a profile is smooth, so neighbouring points miss together and
+/// the points are not independent measurements; s^2 (J^T J)^-1 then reads
+/// sigmas too small, by up to about sqrt((1 + rho) / (1 - rho)) for slopes
+/// smooth along long scans. The errors are taken
+/// as first-order autoregressive along each run (a point's correlation with
+/// the one k places on is rho^k; independent between runs) and the
+/// covariance of the least-squares estimate is the sandwich
+///   (J^T J)^-1 J^T Sigma J (J^T J)^-1,  Sigma_ik = s^2 rho^|i-k| within a run
+/// (J. M. Wooldridge, Introductory Econometrics, 4th ed., ch. 12.1, the
+/// variance of OLS under AR(1) errors), with rho the residuals' lag-1
+/// autocorrelation sum r_t r_t-1 / sum r_t^2 over the runs (not centred: an
+/// offset common to a scan is a correlation too; below 1), taken as 0 when
+/// negative, and s^2 = |r|^2 / (m - parameters). With rho = 0 it is
+/// s^2 (J^T J)^-1; for slopes smooth along the scans (the wear's) rho > 0
+/// widens the sigmas (slopes that alternate along a scan could narrow them).
+struct SerialCovariance {
+  Eigen::MatrixXd covariance;              // the sandwich
+  Eigen::MatrixXd covariance_independent;  // s^2 (J^T J)^-1
+  double lag1 = 0;                         // rho as used, in [0, 1)
+};
+SerialCovariance serial_covariance(const Eigen::MatrixXd& J, const Eigen::VectorXd& r, const std::vector<int>& runs);
 
 /// Fits p.names to p.measured. Throws InputError naming p.measured.source
 /// when the data cannot determine a factor: no profile after 0 h
@@ -60,7 +88,9 @@ struct CalibrationResult {
 /// of the two slopes' promises), or that runs out of iterations where the
 /// 2 % model at its last point still promises that much, is returned with
 /// `converged` false (`stalled` for the first, and for the second where
-/// its last iteration found no step); require_converged() refuses it.
+/// its last iteration found no step); require_converged() refuses it. The
+/// covariance is serial_covariance()'s at the fitted factors, over the 2 %
+/// slope.
 CalibrationResult calibrate(const CalibrationProblem& p);
 
 /// Throws SimulationError (exit 3) naming p.measured.source, the factors, the

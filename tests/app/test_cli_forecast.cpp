@@ -985,7 +985,13 @@ TEST_CASE("calibrate recovers the wear factor of synthetic scans from the comman
     CHECK(cal.attr_string("/calibrate", "criterion") == j["criterion"].str());
     CHECK(cal.attr_double("/calibrate", "calibration_gravitational") == j["calibration_gravitational"].num());
     CHECK(cal.doubles("/calibrate/rms_per_profile_m").size() == 2);
+    CHECK(cal.doubles("/calibrate/sigma_ln_independent")[0] ==
+          params[0]["sigma_ln_independent"].num());
+    CHECK(cal.attr_double("/calibrate", "residual_lag1") == j["residual_lag1"].num());
   }
+  // the misfit's correlation along the scans (serial_covariance())
+  CHECK(j["residual_lag1"].num() >= 0);
+  CHECK(j["residual_lag1"].num() <= 1);
   // the calibrated configuration carries the fitted factor and loads again
   REQUIRE(fs::exists(dir / "cal" / "calibrated.toml"));
   const std::string cal_toml = read_file((dir / "cal" / "calibrated.toml").string());
@@ -995,6 +1001,10 @@ TEST_CASE("calibrate recovers the wear factor of synthetic scans from the comman
                                                    params[0]["factor"].num(), std::exp(params[0]["sigma_ln"].num()))));
   CHECK_THAT(cal_toml, Catch::Contains("P50 " + fmt::format("{:.0f}", j["remaining_hours_p50"].num()) + " h (" +
                                        j["relining_date_p50"].str() + ")"));
+  const double widen = params[0]["sigma_ln"].num() / params[0]["sigma_ln_independent"].num();
+  CHECK_THAT(cal_toml, Catch::Contains(fmt::format("#   misfit correlated along the scans with lag-1 {:.2f}: "
+                                                   "sigmas x{:.2f} those of independent points",
+                                                   j["residual_lag1"].num(), widen)));
   const RunResult again = run_linerlife("geometry " + (dir / "cal" / "calibrated.toml").string() + " --json");
   CHECK(again.code == 0);
 
