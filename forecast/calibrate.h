@@ -47,6 +47,7 @@ struct CalibrationResult {
   bool converged = false;
   bool stalled = false;        // no step lowered the misfit, though the linear models promised a gain
   double promised_rms_m = 0;   // [m] the rms the linear models promised where the fit stalled (the smaller)
+  int recheck_steps = 0;       // steps a 10 % slope found where the 2 % one before it found none
 };
 
 /// The covariance of least-squares parameters whose residuals are correlated
