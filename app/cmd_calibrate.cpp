@@ -156,6 +156,23 @@ std::string correlation_text(const CalibrationResult& r) {
                      r.residual_lag1, widen);
 }
 
+/// Where the fit misses the scans by more than a scan resolves (about 1 mm)
+/// and neighbouring points miss together (lag-1 at least 0.8), the misfit is
+/// the model's, not a scanner's noise: the factors absorb it, by more than
+/// their sigmas say (the stale example scans of docs/measured-profiles.md:
+/// rms 1.38 mm, lag-1 0.95, the impact factor 0.32 for 1.3). The text of a
+/// note saying so, or "" for a fit within the scans' resolution or with
+/// uncorrelated residuals.
+std::string model_misfit_text(const CalibrationResult& r) {
+  constexpr double kScanResolutionM = 1e-3, kSharedLag1 = 0.8;
+  if (!(r.rms_m >= kScanResolutionM && r.residual_lag1 >= kSharedLag1)) return "";
+  return fmt::format("the fit misses the scans by {:.2f} mm rms, and neighbouring points miss together (lag-1 {:.2f}): "
+                     "the misfit is the model's, not a scanner's noise, and the factors absorb it by more than their "
+                     "sigmas say; check the scans' hours and the configuration against the mill "
+                     "(docs/measured-profiles.md, \"How far the factors can be trusted\")",
+                     1000 * r.rms_m, r.residual_lag1);
+}
+
 int run_calibrate(const CalibrateOptions& o) {
   const Config c = load_config_or_default(o.config);
   if (o.measured.empty()) throw InputError("--measured", "calibrate needs --measured FILE.csv (docs/measured-profiles.md)");
@@ -220,6 +237,8 @@ int run_calibrate(const CalibrateOptions& o) {
   if (!o.json) std::cerr << fmt::format("  fitting {} parameter(s) to {} profiles...\n", ps.size(), h.snapshots.size());
   const CalibrationResult r = calibrate(p);
   require_converged(p, r);  // a stalled fit's factors are not a fit (exit 3)
+  const std::string misfit = model_misfit_text(r);
+  if (!misfit.empty()) note("linerlife: note: " + misfit);
 
   // the calibrated configuration
   Config cal = c;
@@ -328,6 +347,7 @@ int run_calibrate(const CalibrateOptions& o) {
       head += fmt::format("#   {}: factor {:.4g}, 1-sigma x/ {:.3f} (sigma_ln {:.4g})\n", ps[i].name, r.params[i],
                           std::exp(r.sigma_log[i]), r.sigma_log[i]);
     head += "#   " + correlation_text(r) + "\n";
+    if (!misfit.empty()) head += "#   " + misfit + "\n";
     head += fmt::format("#   RMS misfit {:.2f} mm (was {:.2f} mm with the given factors){}\n", 1000 * r.rms_m,
                         1000 * r.rms_initial_m, r.converged ? "" : "; the fit did not converge");
     head += due ? fmt::format("#   remaining life from {} h: 0 h, due now ({})\n", last.hours, q.criterion)
