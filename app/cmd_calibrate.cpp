@@ -141,9 +141,8 @@ void check_history_within_horizon(const Config& c, const MeasuredHistory& h, con
 }
 
 /// The misfit's correlation along the scans, and the ratio of the sigmas to
-/// independent points'
-/// (serial_covariance(), docs/measured-profiles.md, "How far the factors can
-/// be trusted").
+/// independent points' (serial_covariance(), docs/measured-profiles.md, "How
+/// far the factors can be trusted").
 std::string correlation_text(const CalibrationResult& r) {
   double lo = std::numeric_limits<double>::infinity(), hi = 0;
   for (size_t i = 0; i < r.sigma_log.size(); ++i) {

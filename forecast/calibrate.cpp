@@ -357,8 +357,8 @@ CalibrationResult calibrate(const CalibrationProblem& p) {
     }
     last_improved = improved;
     if (scale != Scale::fine) {
-      if (improved && scale == Scale::recheck) ++res.recheck_steps;
       if (improved) {
+        if (scale == Scale::recheck) ++res.recheck_steps;
         scale = small ? Scale::fine : Scale::coarse;
         if (small) lambda = 1e-3;  // a new scale starts afresh
         continue;

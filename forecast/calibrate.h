@@ -57,10 +57,10 @@ struct CalibrationResult {
 /// makes along a profile is smooth, so neighbouring points miss together and
 /// the points are not independent measurements; s^2 (J^T J)^-1 then reads
 /// sigmas too small, by up to about sqrt((1 + rho) / (1 - rho)) for slopes
-/// smooth along long scans. The errors are taken
-/// as first-order autoregressive along each run (a point's correlation with
-/// the one k places on is rho^k; independent between runs) and the
-/// covariance of the least-squares estimate is the sandwich
+/// smooth along long scans. The errors are taken as first-order
+/// autoregressive along each run (a point's correlation with the one k
+/// places on is rho^k; independent between runs) and the covariance of the
+/// least-squares estimate is the sandwich
 ///   (J^T J)^-1 J^T Sigma J (J^T J)^-1,  Sigma_ik = s^2 rho^|i-k| within a run
 /// (J. M. Wooldridge, Introductory Econometrics, 4th ed., ch. 12.1, the
 /// variance of OLS under AR(1) errors), with rho the residuals' lag-1
