@@ -650,7 +650,12 @@ std::string config_to_toml(const Config& c, bool annotate) {
       if (annotate) {
         out += fmt::format("# {}", k.help);
         if (!k.unit.empty() && k.unit != "-") out += fmt::format(" [{}]", k.unit);
-        out += fmt::format(". Allowed: {}.{}\n", k.allowed(), k.required ? " Required." : "");
+        out += fmt::format(". Allowed: {}.{}", k.allowed(), k.required ? " Required." : "");
+        // what a file that leaves the key out gets: not always the value
+        // printed below (the bundled mill's), e.g. slurry_void_fill 0 (a dry
+        // charge) against the Qiu mill's 1.0
+        if (!k.required && k.default_value) out += fmt::format(" If left out: {}.", format_value(*k.default_value));
+        out += "\n";
       }
       if (v)
         out += fmt::format("{} = {}\n", k.name, format_value(*v));

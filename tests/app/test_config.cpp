@@ -277,6 +277,50 @@ TEST_CASE("every configuration key is documented", "[app][config][docs]") {
   }
 }
 
+TEST_CASE("the annotated configuration says what a key left out gets, and it does", "[app][config]") {
+  // A file that leaves out an optional key gets the schema's value, which is
+  // not always the bundled mill's that `linerlife defaults` prints (a minimal
+  // file got a dry charge, slurry_void_fill 0 against the Qiu mill's 1.0, and
+  // 19 % less power, with nothing said). For every such key: its comment
+  // names the value, and a file without the key loads with that value.
+  const std::string text = config_to_toml(load_default_config(), true);
+  // the line `name = value` of `section` in a printed configuration (npos: none)
+  auto key_line = [](const std::string& t, const std::string& section, const std::string& name) {
+    const auto sec = t.find("\n[" + section + "]\n");
+    REQUIRE(sec != std::string::npos);
+    const auto next = t.find("\n[", sec + 1);
+    const auto pos = t.find("\n" + name + " = ", sec);
+    return pos == std::string::npos || (next != std::string::npos && pos > next) ? std::string::npos : pos + 1;
+  };
+  int checked = 0, differ = 0;
+  for (const auto& k : config_schema().keys) {
+    if (k.required || !k.default_value) continue;
+    INFO("[" << k.section << "] " << k.name);
+    const auto at = key_line(text, k.section, k.name);
+    REQUIRE(at != std::string::npos);
+    const auto comment = text.rfind("\n# ", at - 2) + 1;
+    const std::string help = text.substr(comment, at - 1 - comment);
+    const auto said_at = help.find(" If left out: ");
+    REQUIRE(said_at != std::string::npos);
+    const std::string said = help.substr(said_at + 14, help.size() - said_at - 15);  // up to the final '.'
+    REQUIRE(help.back() == '.');
+    // the file without the key: the value it loads with, as printed
+    std::string without = text;
+    without.erase(at, without.find('\n', at) + 1 - at);
+    const std::string printed = config_to_toml(load_config_text(without, "left_out.toml", "."), false);
+    const auto got = key_line(printed, k.section, k.name);
+    REQUIRE(got != std::string::npos);
+    const auto eq = got + k.name.size() + 3;
+    CHECK(printed.substr(eq, printed.find('\n', eq) - eq) == said);
+    const auto shown = at + k.name.size() + 3;
+    if (text.substr(shown, text.find('\n', shown) - shown) != said) ++differ;
+    ++checked;
+  }
+  CHECK(checked > 50);
+  // slurry_void_fill, time_step_s, the two amplifications and throughput_t_per_h (2026-12-08)
+  CHECK(differ == 5);
+}
+
 TEST_CASE("forecast dates, availability and shutdowns load and are checked", "[app][config][input]") {
   std::string t = edited("forecast", "start_date", "2028-02-29");
   t = edited_text(t, "forecast", "shutdowns", "[{ start = 2028-06-01, days = 7 }, { start = 2028-12-24, days = 3.0 }]");
