@@ -83,7 +83,13 @@ MorrellResult morrell_c_model(const MorrellInput& in) {
     r.shoulder_rad = morrell_shoulder_rad(J, phi, r.toe_rad);
   }
   const double thT = r.toe_rad, thS = r.shoulder_rad;
-  r.slurry_toe_rad = in.overflow ? kPi + std::asin(std::min(1.0, in.trunnion_radius_m / rm)) : thT;
+  // theta_TO, the toe of the slurry pool (Morrell 1996; reference/charge-models.md
+  // §1): where the slurry surface at the trunnion, y = -r_t, meets the shell.
+  // The pool lies between it and the charge toe; a slurry surface below the
+  // toe (theta_TO past theta_T: a high filling or a wide trunnion) leaves no
+  // pool, and its term rho_p (sin theta_T - sin theta_TO) would turn positive,
+  // power from a pool that is not there: theta_TO = theta_T then, as a grate's.
+  r.slurry_toe_rad = in.overflow ? std::min(kPi + std::asin(std::min(1.0, in.trunnion_radius_m / rm)), thT) : thT;
   r.z = std::pow(1.0 - J, 0.4532);
   r.charge_density_t_m3 = morrell_charge_density(J, in.ball_filling, in.porosity, in.slurry_void_fill,
                                                  in.slurry_solids_volume_fraction, in.ore_density_t_m3,

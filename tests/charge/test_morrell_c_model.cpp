@@ -121,3 +121,38 @@ TEST_CASE("beyond phi_c the charge is taken as centrifuged", "[charge][morrell]"
   in.filling = 0;
   CHECK_THROWS_AS(morrell_c_model(in), InputError);
 }
+
+TEST_CASE("an overflow pool lowers the power, and a slurry level below the toe leaves none", "[charge][morrell]") {
+  // Morrell (1996): A = rho_c (sin theta_S - sin theta_T) + rho_p (sin theta_T -
+  // sin theta_TO), theta_TO = pi + asin(r_t / r_m) where the slurry at the
+  // trunnion meets the shell. A pool at the toe side turns with the mill and
+  // takes power off; with the slurry surface below the toe there is no pool,
+  // and the term taken as written turned positive (a review: +26 and +49 kW on
+  // a 7.3 m mill with 6.5 and 6.9 m trunnions).
+  MorrellInput in;
+  in.diameter_m = 5.0;
+  in.length_m = 7.0;
+  in.filling = 0.35;
+  in.ball_filling = 0.35;
+  in.ore_density_t_m3 = 2.7;
+  in.ball_density_t_m3 = 7.8;
+  in.pulp_density_t_m3 = 1.8;
+  in.speed_rps = 0.75 * 42.3 / std::sqrt(5.0) / 60.0;
+  const MorrellResult grate = morrell_c_model(in);
+  in.overflow = true;
+  in.trunnion_radius_m = 0.9;  // the M3 ball mill of the worked examples: theta_TO 201.1 deg, below theta_T 224.4
+  const MorrellResult pool = morrell_c_model(in);
+  CHECK(pool.slurry_toe_rad * 180.0 / kPi == Approx(201.1).margin(0.05));
+  CHECK(pool.cylinder_power_kw < grate.cylinder_power_kw - 1.0);
+  // a trunnion whose slurry level lies above the toe's height by a hair and below it
+  const double y_toe = -std::sin(grate.toe_rad) * 2.5;  // depth of the toe below the axis [m]
+  in.trunnion_radius_m = y_toe - 0.01;
+  CHECK(morrell_c_model(in).cylinder_power_kw < grate.cylinder_power_kw);
+  for (const double rt : {y_toe + 0.01, 0.5 * (y_toe + 2.5), 2.45}) {
+    INFO("r_t = " << rt << " m, toe " << y_toe << " m below the axis");
+    in.trunnion_radius_m = rt;
+    const MorrellResult m = morrell_c_model(in);
+    CHECK(m.slurry_toe_rad == grate.toe_rad);
+    CHECK(m.cylinder_power_kw == grate.cylinder_power_kw);
+  }
+}
