@@ -168,7 +168,7 @@ int run_forecast_command(const ForecastOptions& o) {
                                          hilo_caveat(c.model.charge, c.liner),
                                          one_ball_caveat(c.model.charge, c.charge.ball_diameter_m, f.history),
                                          explicit_step_caveat(c.forecast, c.mill.speed_rpm, f),
-                                         few_drives_caveat(c.forecast, f)};
+                                         few_drives_caveat(c.forecast, f), no_wear_caveat(c.wear, f)};
   const std::string caveat = caveat_lines(caveats);  // as forecast.h5 keeps them
 
   if (o.json) {
@@ -242,8 +242,11 @@ int run_forecast_command(const ForecastOptions& o) {
                                c.forecast.throughput_t_per_h);
     std::cout << fmt::format("  lifter height            {:>10.4f} m  -> {:.4f} m\n", first.lifter_height_m,
                              last.lifter_height_m);
-    std::cout << fmt::format("  leading face angle       {:>10} deg -> {} deg\n", num(first.face_angle_leading_deg, "{:.1f}"),
-                             num(last.face_angle_leading_deg, "{:.1f}"));
+    if (std::isfinite(first.face_angle_leading_deg) || std::isfinite(last.face_angle_leading_deg))
+      std::cout << fmt::format("  leading face angle       {:>10} deg -> {} deg\n",
+                               num(first.face_angle_leading_deg, "{:.1f}"), num(last.face_angle_leading_deg, "{:.1f}"));
+    else  // a plain plate ("n/a deg -> n/a deg" before)
+      std::cout << "  leading face angle       n/a (no lifter)\n";
     std::cout << fmt::format("  thinnest point           {:>10.4f} m  -> {:.4f} m\n", first.min_thickness_m,
                              last.min_thickness_m);
     // to the kW on a plant mill, to three figures on a laboratory one (a
@@ -253,7 +256,7 @@ int run_forecast_command(const ForecastOptions& o) {
     // against 1,734 kW on a ball mill, with no word why)
     // (the amplify method's later drives average amplify_revolutions: no note)
     const std::string averaged =
-        c.forecast.method != ForecastMethod::Amplify
+        c.forecast.method != ForecastMethod::Amplify && c.model.charge != "empirical"  // closed form: no revolutions
             ? fmt::format(" (each the mean of a drive's {:g} revolutions)", c.forecast.revolutions_per_drive)
             : "";
     std::cout << fmt::format("  net power                {:>10} kW -> {} kW{}\n",

@@ -189,6 +189,9 @@ std::string explicit_step_caveat(const ForecastSpec& spec, double speed_rpm, con
 /// forecast 15,833 h on one charge drive, 13,711 h on 25).
 constexpr double kFewDrivesCaveatRefreshes = 5.0;
 std::string few_drives_caveat(const ForecastSpec& spec, const ForecastResult& f);
+/// The caveat of a forecast without wear laws ([wear] laws = "none"): it can
+/// reach no relining criterion ("" where laws are given).
+std::string no_wear_caveat(const WearSpec& wear, const ForecastResult& f);
 /// A caveat as it goes into --json: an array of {text}, empty without one.
 Json caveats_json(const std::string& caveat);
 /// Several caveats (the empty ones left out) as one --json array of {text}.

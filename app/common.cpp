@@ -298,6 +298,17 @@ std::string explicit_step_caveat(const ForecastSpec& spec, double speed_rpm, con
       method_name(spec.method), step_h, setting, 100.0 * step_h / f.operating_hours, f.operating_hours);
 }
 
+std::string no_wear_caveat(const WearSpec& wear, const ForecastResult& f) {
+  if (!wear.laws.empty()) return "";
+  // a review, 2026-12-08: the empirical model, which gives no loads on the
+  // liner, allows only laws = "none", and the forecast of it ran to its horizon
+  // with "no relining criterion reached" and nothing said why
+  return fmt::format("[wear] laws = \"none\": nothing wears, so no relining criterion can be reached and the "
+                     "forecast ran to its horizon ({:.0f} operating hours); a wear forecast needs wear laws and a "
+                     "charge model that gives them the loads on the liner (\"layer\", \"dem\")",
+                     f.operating_hours);
+}
+
 std::string few_drives_caveat(const ForecastSpec& spec, const ForecastResult& f) {
   if (spec.method != ForecastMethod::Ode || spec.refresh_always || f.history.size() < 2) return "";
   const LifeRecord& first = f.history.front();

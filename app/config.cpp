@@ -384,17 +384,20 @@ void check_and_resolve(Config& c) {
     const double phi = c.mill.speed_rpm / nc;
     if (phi < kMinSpeedFractionCritical)
       fail_at(c, "mill.speed_rpm",
-              fmt::format("speed_rpm = {} is only {:.3g} of the critical speed ({:.3f} rpm for the diameter inside the "
+              fmt::format("speed_rpm = {} is only {:.3g} of the critical speed ({} rpm for the diameter inside the "
                           "liners, {:.4f} m): below {} of critical the charge does not tumble, it creeps up the shell "
                           "and slides back; allowed {} <= speed_rpm < {}",
-                          c.mill.speed_rpm, phi, nc, lm.effective_diameter_m, kMinSpeedFractionCritical,
+                          c.mill.speed_rpm, phi, limit_text(nc, false, 5), lm.effective_diameter_m, kMinSpeedFractionCritical,
                           limit_text(kMinSpeedFractionCritical * nc, true), limit_text(nc, false, 5)));
     if (phi >= 1.0)
       fail_at(c, "mill.speed_rpm",
-              fmt::format("speed_rpm = {} is {:.3f} of the critical speed ({:.3f} rpm for the diameter inside the "
+              // the critical speed as the allowed limit prints it (rounded to 3
+              // decimals it read 16.045 beside "allowed ... < 16.044")
+              fmt::format("speed_rpm = {} is {:.3f} of the critical speed ({} rpm for the diameter inside the "
                           "liners, {:.4f} m): at or above critical the charge centrifuges; allowed 0 < speed_rpm < "
                           "{}",
-                          c.mill.speed_rpm, phi, nc, lm.effective_diameter_m, limit_text(nc, false, 5)));
+                          c.mill.speed_rpm, phi, limit_text(nc, false, 5), lm.effective_diameter_m,
+                          limit_text(nc, false, 5)));
   }
   // Media must fit between two lifters (the gap at the plate).
   if (!L.measured && L.design.lifter_height_m > 0) {

@@ -3070,11 +3070,17 @@ ChargeResult LayerSim::run() {
   const double dt_req = in_.model.time_step_s;
   substeps_ = dt_req > dt_max ? static_cast<int>(std::ceil(dt_req / dt_max - 1e-9)) : 1;
   dt_ = dt_req / substeps_;
-  if (substeps_ > 1 && dt_courant <= relax_dt_)
-    notes_.push_back(fmt::format("time_step_s = {} s moves the shell {:.2f} {} per step (stable up to {}): "
+  if (substeps_ > 1 && dt_courant <= relax_dt_) {
+    // two decimals, or four where two would round down to the limit ("0.45 ...
+    // (stable up to 0.45)" read as a contradiction)
+    const double c_req = omega_ * R_eff_ * dt_req / d_;
+    std::string c_text = fmt::format("{:.2f}", c_req);
+    if (std::stod(c_text) <= courant) c_text = fmt::format("{:.4f}", c_req);
+    notes_.push_back(fmt::format("time_step_s = {} s moves the shell {} {} per step (stable up to {}): "
                                  "sub-stepped {} times ({:.4g} s)",
-                                 dt_req, omega_ * R_eff_ * dt_req / d_,
-                                 d_ == d_ball_ ? "media diameters" : "element widths", courant, substeps_, dt_));
+                                 dt_req, c_text, d_ == d_ball_ ? "media diameters" : "element widths", courant,
+                                 substeps_, dt_));
+  }
   else if (substeps_ > 1)
     notes_.push_back(fmt::format("time_step_s = {} s is longer than the relaxation interval ({} outer cells, {:.4g} s): "
                                  "sub-stepped {} times ({:.4g} s)",

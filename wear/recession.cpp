@@ -83,20 +83,28 @@ WearModel make_wear_model(const WearSpec& spec, const ChargeModelEntry& charge_m
       if (cm.*what) list += fmt::format("{}\"{}\"", list.empty() ? "" : ", ", cm.name);
     return list;
   };
+  // what the charge model allows: its laws by name, or only none (a review,
+  // 2026-12-08: "laws without an abrasion/ law" sent the empirical model's
+  // user to an impact law, refused in turn)
+  std::string allowed;
+  for (const WearLawEntry& w : wear_laws())
+    if (w.kind == WearKind::Impact ? charge_model.resolves_impacts : charge_model.resolves_abrasion)
+      allowed += fmt::format("{}\"{}\"", allowed.empty() ? "" : ", ", w.name);
+  allowed = allowed.empty() ? "only laws = \"none\" (no wear: it gives no loads on the liner)"
+                            : "laws among " + allowed;
   for (const std::string& name : spec.laws) {
     const WearLawEntry& e = find_wear_law(name);
     if (e.kind == WearKind::Impact && !charge_model.resolves_impacts)
       throw InputError("wear.laws",
                        fmt::format("[wear] laws: wear law \"{}\" needs impact spectra, but [model] charge = \"{}\" "
-                                   "gives none; allowed with it: laws without an impact/ law; or a charge model that "
-                                   "resolves impacts ({})",
-                                   name, charge_model.name, models_with(&ChargeModelEntry::resolves_impacts)));
+                                   "gives none; allowed with it: {}; or a charge model that resolves impacts ({})",
+                                   name, charge_model.name, allowed, models_with(&ChargeModelEntry::resolves_impacts)));
     if (e.kind == WearKind::Abrasion && !charge_model.resolves_abrasion)
       throw InputError("wear.laws",
                        fmt::format("[wear] laws: wear law \"{}\" needs the sliding loads on the liner, but [model] "
-                                   "charge = \"{}\" gives none; allowed with it: laws without an abrasion/ law; or a "
-                                   "charge model that gives them ({})",
-                                   name, charge_model.name, models_with(&ChargeModelEntry::resolves_abrasion)));
+                                   "charge = \"{}\" gives none; allowed with it: {}; or a charge model that gives "
+                                   "them ({})",
+                                   name, charge_model.name, allowed, models_with(&ChargeModelEntry::resolves_abrasion)));
     if (name == "abrasion/radziszewski") {
       m.radziszewski = true;
       m.radziszewski_tan_theta = law_parameter(spec, param(e, "radziszewski_tan_theta"));

@@ -1023,10 +1023,32 @@ TEST_CASE("a wear law the charge model gives no loads for is refused at its line
     CHECK_THAT(r.err, Catch::Contains("e.toml:") &&
                           Catch::Contains(": [wear] laws: wear law \"abrasion/radziszewski\" needs the sliding loads "
                                           "on the liner, but [model] charge = \"empirical\" gives none; allowed with it: "
-                                          "laws without an abrasion/ law; or a charge model that gives them (\"layer\", "
-                                          "\"dem\")"));
+                                          "only laws = \"none\" (no wear: it gives no loads on the liner); or a charge "
+                                          "model that gives them (\"layer\", \"dem\")"));
     CHECK_FALSE(fs::exists(dir / "out"));
   }
+  // an impact law alone, what "laws without an abrasion/ law" suggested before
+  // (2026-12-08), is refused the same way, naming the one choice
+  auto replaced = [](std::string t, const std::string& old_line, const std::string& new_line) {
+    const auto pos = t.find("\n" + old_line);
+    REQUIRE(pos != std::string::npos);
+    return t.replace(pos + 1, t.find('\n', pos + 1) - pos - 1, new_line);
+  };
+  const std::string emp = defaults_with("charge = ", "charge = \"empirical\"");
+  write_file(dir / "i.toml", replaced(emp, "laws = ", "laws = \"impact/sheldon_kanhere\""));
+  const RunResult r = run_linerlife("forecast " + (dir / "i.toml").string());
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("wear law \"impact/sheldon_kanhere\" needs impact spectra") &&
+                        Catch::Contains("allowed with it: only laws = \"none\""));
+  // and that one runs to the horizon, saying why no criterion was reached
+  write_file(dir / "n.toml", replaced(emp, "laws = ", "laws = \"none\""));
+  const RunResult n = run_linerlife("forecast " + (dir / "n.toml").string());
+  INFO(n.out << n.err);
+  CHECK(n.code == 0);
+  CHECK_THAT(n.out, Catch::Contains("no relining criterion reached"));
+  CHECK_THAT(n.err, Catch::Contains("[wear] laws = \"none\": nothing wears, so no relining criterion can be reached"));
+  CHECK_THAT(n.out, !Catch::Contains("revolutions"));  // a closed-form model averages none
   fs::remove_all(dir);
 }
 

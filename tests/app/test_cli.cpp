@@ -79,6 +79,11 @@ TEST_CASE("geometry's summary says a plain plate has no lifter and gives a hi-lo
   CHECK_THAT(r.out, Catch::Contains("leading face angle                n/a (no lifter)\n"));
   CHECK_THAT(r.out, Catch::Contains("top width                         n/a (no lifter)\n"));
   CHECK_THAT(r.out, !Catch::Contains("n/a deg") && !Catch::Contains("n/a m"));
+  // and the forecast's (a review, 2026-12-08: "n/a deg -> n/a deg")
+  r = run_linerlife("forecast " + (dir / "flat.toml").string());
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out, Catch::Contains("  leading face angle       n/a (no lifter)\n"));
+  CHECK_THAT(r.out, !Catch::Contains("n/a deg"));
   write_file(dir / "hilo.toml", std::regex_replace(defaults, std::regex("\npattern = [^\n]*\n"),
                                                    "\npattern = \"hi-lo\"\nlow_lifter_height_m = 0.15\n"
                                                    "low_lifter_top_width_m = 0.12\n"));

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include "app/config.h"
 #include "app/config_edit.h"
@@ -200,6 +201,22 @@ TEST_CASE("the declared ranges are the ones that work", "[app][config][input]") 
   CHECK_NOTHROW(load_config_text(edited("mill", "speed_rpm", "0.6702"), "mill.toml", "."));
   CHECK_NOTHROW(load_config_text(edited("mill", "speed_rpm", "13.402"), "mill.toml", "."));
   refused(edited("mill", "speed_rpm", "13.403"), {"speed_rpm = 13.403 is 1.000 of the critical speed", "speed_rpm < 13.402"});
+  // the critical speed in the message is the limit it allows up to (a 7.3 m
+  // mill read "critical speed (16.045 rpm" beside "speed_rpm < 16.044")
+  for (double D = 9.0; D < 15.0; D += 0.173) {
+    INFO("diameter_m = " << D);
+    try {
+      load_config_text(edited_text(edited("mill", "diameter_m", fmt::format("{}", D)), "mill", "speed_rpm", "30.0"),
+                       "mill.toml", ".");
+      FAIL("accepted");
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      const auto a = m.find("of the critical speed (") + 23, b = m.find("speed_rpm < ") + 12;
+      REQUIRE(a > 23);
+      REQUIRE(b > 12);
+      CHECK(m.substr(a, m.find(' ', a) - a) == m.substr(b));
+    }
+  }
   refused(edited_text(removed("speed_rpm"), "mill", "speed_fraction_critical", "0.04"),
           {"speed_fraction_critical = 0.04: out of range; allowed 0.05 <= value < 1"});
   CHECK_NOTHROW(load_config_text(edited_text(removed("speed_rpm"), "mill", "speed_fraction_critical", "0.05"),

@@ -180,6 +180,15 @@ TEST_CASE("a step beyond the stable range is sub-stepped with a note", "[charge]
   CHECK(r.stats.time_step_s < 0.05);
   REQUIRE(!r.notes.empty());
   CHECK_THAT(r.notes.front(), Catch::Contains("sub-stepped"));
+  // a step a hair past the limit says by how much: "0.45 ... (stable up to
+  // 0.45)" read as a contradiction (a review, 2026-12-08)
+  const double c_per_s = c.mill.speed_rpm * 2.0 * kPi / 60.0 * 0.5 * metrics(s, c.mill.rotation, c.liner.density_kg_m3).effective_diameter_m /
+                         c.charge.ball_diameter_m;  // Courant number per second of step
+  in.model.time_step_s = 0.4515 / c_per_s;
+  const ChargeResult hair = run_model("layer", in);
+  CHECK(hair.stats.substeps == 2);
+  REQUIRE(!hair.notes.empty());
+  CHECK_THAT(hair.notes.front(), Catch::Contains("moves the shell 0.4515 media diameters per step (stable up to 0.45)"));
 }
 
 TEST_CASE("a step longer than the relaxation interval is sub-stepped with a note", "[charge][layer]") {
