@@ -36,6 +36,8 @@ constexpr Field kFields[] = {
     {"shoulder_deg", &LifeRecord::shoulder_deg},
     {"direct_impact_fraction", &LifeRecord::direct_impact_fraction},
     {"impact_fraction", &LifeRecord::impact_fraction},
+    {"low_lifter_height_m", &LifeRecord::low_lifter_height_m},
+    {"low_face_angle_leading_deg", &LifeRecord::low_face_angle_leading_deg},
 };
 
 std::vector<double> xy(const std::vector<Eigen::Vector2d>& p) {

@@ -185,6 +185,11 @@ int run_forecast_command(const ForecastOptions& o) {
     }
     hist.set("hours", h).set("lifter_height_m", lh).set("face_angle_leading_deg", fa).set("net_power_kw", pw)
         .set("crest_thickness_m", crest).set("liner_mass_kg_per_m", mass).set("min_thickness_m", thin);
+    if (c.liner.hi_lo) {  // the low lifters (segment 1), as the high ones above
+      std::vector<double> low_h, low_fa;
+      for (const LifeRecord& r : f.history) low_h.push_back(r.low_lifter_height_m), low_fa.push_back(r.low_face_angle_leading_deg);
+      hist.set("low_lifter_height_m", low_h).set("low_face_angle_leading_deg", low_fa);
+    }
     Json j = Json::object();
     j.set("config", c.source)
         .set("method", method_name(c.forecast.method))
@@ -240,13 +245,19 @@ int run_forecast_command(const ForecastOptions& o) {
       std::cout << fmt::format("  ore processed            {:>10} at {} t/h\n",
                                f.tonnes >= 1e5 ? num(f.tonnes / 1e6, "{:.3f} Mt") : num(f.tonnes, "{:.4g} t"),
                                c.forecast.throughput_t_per_h);
-    std::cout << fmt::format("  lifter height            {:>10.4f} m  -> {:.4f} m\n", first.lifter_height_m,
-                             last.lifter_height_m);
+    std::cout << fmt::format("  lifter height            {:>10.4f} m  -> {:.4f} m{}\n", first.lifter_height_m,
+                             last.lifter_height_m, c.liner.hi_lo ? " (the high lifters)" : "");
+    if (c.liner.hi_lo)
+      std::cout << fmt::format("  low lifter height        {:>10.4f} m  -> {:.4f} m\n", first.low_lifter_height_m,
+                               last.low_lifter_height_m);
     if (std::isfinite(first.face_angle_leading_deg) || std::isfinite(last.face_angle_leading_deg))
       std::cout << fmt::format("  leading face angle       {:>10} deg -> {} deg\n",
                                num(first.face_angle_leading_deg, "{:.1f}"), num(last.face_angle_leading_deg, "{:.1f}"));
     else  // a plain plate ("n/a deg -> n/a deg" before)
       std::cout << "  leading face angle       n/a (no lifter)\n";
+    if (c.liner.hi_lo)
+      std::cout << fmt::format("  low leading face angle   {:>10} deg -> {} deg\n",
+                               num(first.low_face_angle_leading_deg, "{:.1f}"), num(last.low_face_angle_leading_deg, "{:.1f}"));
     std::cout << fmt::format("  thinnest point           {:>10.4f} m  -> {:.4f} m\n", first.min_thickness_m,
                              last.min_thickness_m);
     // to the kW on a plant mill, to three figures on a laboratory one (a

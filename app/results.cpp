@@ -125,6 +125,8 @@ void write_forecast(H5Writer& h5, const std::string& g, const ForecastResult& f,
   col("shoulder_deg", "deg", [](const LifeRecord& r) { return r.shoulder_deg; });
   col("direct_impact_fraction", "-", [](const LifeRecord& r) { return r.direct_impact_fraction; });
   col("impact_fraction", "-", [](const LifeRecord& r) { return r.impact_fraction; });
+  col("low_lifter_height_m", "m", [](const LifeRecord& r) { return r.low_lifter_height_m; });
+  col("low_face_angle_leading_deg", "deg", [](const LifeRecord& r) { return r.low_face_angle_leading_deg; });
 
   const std::string pg = g + "/profiles";
   h5.group(pg);

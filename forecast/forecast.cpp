@@ -283,6 +283,7 @@ class Cell {
 /// What the criteria look at.
 struct Gauge {
   SegmentMetrics lifter;      // segment 0
+  SegmentMetrics low;         // segment 1 where it is a hi-lo ring's low lifter (low.design == 1)
   double min_thickness = 0;   // [m] over the cell
   double mass_kg_per_m = 0;   // [kg/m] ring
 };
@@ -294,6 +295,7 @@ Gauge gauge(const LinerSurface& ring, int period, Rotation rot, double density) 
   double cell_mass = g.lifter.mass_kg_per_m;
   for (int k = 1; k < period; ++k) {
     const SegmentMetrics m = segment_metrics(ring, k, rot, density);
+    if (k == 1 && m.design == 1) g.low = m;
     g.min_thickness = std::min(g.min_thickness, m.min_thickness_m);
     cell_mass += m.mass_kg_per_m;
   }
@@ -519,6 +521,10 @@ class Life {
     r.top_width_m = g.lifter.top_width_m;
     r.min_thickness_m = g.min_thickness;
     r.liner_mass_kg_per_m = g.mass_kg_per_m;
+    if (g.low.design == 1) {
+      r.low_lifter_height_m = g.low.lifter_height_m;
+      r.low_face_angle_leading_deg = g.low.face_angle_leading_deg;
+    }
     const Indicators& ind = last_.indicators;
     r.net_power_kw = last_.has_indicators ? ind.net_power_kw : kNaN;
     r.toe_deg = last_.has_indicators ? ind.toe_deg : kNaN;
@@ -1152,7 +1158,9 @@ CheckpointProblem checkpoint_problem(const ForecastCheckpoint& c, const Forecast
                            Gauge{"history_top_width_m", r.top_width_m}, Gauge{"history_net_power_kw", r.net_power_kw},
                            Gauge{"history_toe_deg", r.toe_deg}, Gauge{"history_shoulder_deg", r.shoulder_deg},
                            Gauge{"history_direct_impact_fraction", r.direct_impact_fraction},
-                           Gauge{"history_impact_fraction", r.impact_fraction}})
+                           Gauge{"history_impact_fraction", r.impact_fraction},
+                           Gauge{"history_low_lifter_height_m", r.low_lifter_height_m},
+                           Gauge{"history_low_face_angle_leading_deg", r.low_face_angle_leading_deg}})
       if (std::isinf(g.v) || std::abs(g.v) > 1e9)
         return bad(g.name, fmt::format("record {}: {}; allowed a finite value of at most 1e9 (or NaN: not known)", i, g.v));
   }

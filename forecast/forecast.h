@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <string>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -45,6 +46,12 @@ struct LifeRecord {
   double toe_deg = 0, shoulder_deg = 0;
   double direct_impact_fraction = 0;   // share of impacting mass thrown straight onto the liner
   double impact_fraction = 0;          // share of the wear rate from impacts
+  // The low lifter of a hi-lo ring (segment 1), as the high one above; NaN on
+  // a uniform ring. (A review, 2026-12-08: a hi-lo forecast reported only the
+  // high lifter, while the low one's crest lost more and the plate beside it
+  // ended the life.)
+  double low_lifter_height_m = std::numeric_limits<double>::quiet_NaN();
+  double low_face_angle_leading_deg = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Profile of segment 0 (centred on angle 0), both edge nodes, mill frame.

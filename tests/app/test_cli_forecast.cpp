@@ -242,6 +242,29 @@ TEST_CASE("a hi-lo forecast by the layer model says how far its charge on worn h
       CHECK_THAT(c, Catch::Contains("checked against the 2D DEM only") && Catch::Contains("charge = \"dem\"") &&
                         Catch::Contains("layer-worn.md"));
   }
+  // The low lifters are reported beside the high ones (a review, 2026-12-08: a
+  // hi-lo forecast gave only the high lifter, while the low one's crest wore
+  // more and the plate beside it ended the life): in the summary, the JSON
+  // history and forecast.h5; a uniform ring has none.
+  const RunResult text = run_linerlife("forecast " + (dir / "hilo.toml").string());
+  REQUIRE(text.code == 0);
+  CHECK_THAT(text.out, Catch::Contains("m (the high lifters)\n") && Catch::Contains("  low lifter height            0.1250 m  -> ") &&
+                           Catch::Contains("  low leading face angle         20.0 deg -> "));
+  const JsonValue h = parse_json(run_linerlife("forecast " + (dir / "hilo.toml").string() + " --json").out)["history"];
+  const auto low = h["low_lifter_height_m"].nums(), high = h["lifter_height_m"].nums();
+  REQUIRE(low.size() == high.size());
+  REQUIRE(low.size() >= 2);
+  CHECK(low.front() == Approx(0.125).margin(1e-4));  // its design height, not the high lifter's 0.25
+  CHECK(high.front() == Approx(0.25).margin(1e-4));
+  CHECK(low.back() < low.front());  // it wears
+  CHECK(h["low_face_angle_leading_deg"].nums().front() == Approx(20.0).margin(0.5));
+  const std::vector<double> low_h5 = H5Reader((dir / "hilo" / "forecast.h5").string()).doubles("/forecast/history/low_lifter_height_m");
+  CHECK(low_h5.front() == Approx(0.125).margin(1e-4));
+  const RunResult uni = run_linerlife("forecast " + (dir / "uniform.toml").string() + " --json");
+  CHECK_FALSE(parse_json(uni.out)["history"].has("low_lifter_height_m"));
+  CHECK_THAT(uni.out, !Catch::Contains("low lifter"));
+  for (double v : H5Reader((dir / "uniform" / "forecast.h5").string()).doubles("/forecast/history/low_lifter_height_m"))
+    CHECK(std::isnan(v));
   fs::remove_all(dir);
 }
 
