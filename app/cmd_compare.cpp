@@ -324,6 +324,9 @@ int run_compare(const CompareOptions& o) {
   // speeds compared by the layer model V-1.2: its power goes the wrong way
   const std::string speed = speed_trend_caveat(configs);
   if (!speed.empty()) note("linerlife: note: " + speed);
+  // fillings compared by the layer model V-1.2: its power hardly follows them
+  const std::string filling = filling_trend_caveat(configs);
+  if (!filling.empty()) note("linerlife: note: " + filling);
   // a measured profile with points closer than a scan resolves: the lives scatter more
   std::string dense;
   for (const Case& k : cases)
@@ -355,7 +358,8 @@ int run_compare(const CompareOptions& o) {
       }
       arr.push(j);
     }
-    std::cout << Json::object().set("cases", arr).set("caveats", caveats_json(std::vector<std::string>{ranking, speed, dense})).dump() << "\n";
+    const Json all = caveats_json(std::vector<std::string>{ranking, speed, filling, dense});
+    std::cout << Json::object().set("cases", arr).set("caveats", all).dump() << "\n";
   } else {
     size_t w = 36;
     for (const Case& k : cases) w = std::max(w, k.label.size() + 1);
@@ -409,7 +413,7 @@ int run_compare(const CompareOptions& o) {
         for (size_t a = 0; a < cases.front().varied.size(); ++a) keys += (a ? "\n" : "") + cases.front().varied[a].first;
         h5.attr("/cases", "varied_keys", keys);
       }
-      const std::string all = caveat_lines({ranking, speed, dense});
+      const std::string all = caveat_lines({ranking, speed, filling, dense});
       if (!all.empty()) h5.attr("/cases", "caveat", all);
       h5.dataset("/cases/operating_hours", hours, {hours.size()}, "h");
       h5.dataset("/cases/mean_net_power_kw", mean_p, {mean_p.size()}, "kW");

@@ -212,4 +212,10 @@ std::string design_ranking_caveat(const std::vector<const Config*>& cases);
 /// runs layer V-1.2 and the cases' speeds differ by more than 1 %.
 std::string speed_trend_caveat(const std::vector<const Config*>& cases);
 
+/// The note of a comparison of fillings by the layer model V-1.2, whose power
+/// hardly follows the filling on the example ball mill where the DEM's rises
+/// (docs/validation/charge.md, "Operating trends"). Non-empty when some case
+/// runs layer V-1.2 and the cases' fillings differ by more than 1 %.
+std::string filling_trend_caveat(const std::vector<const Config*>& cases);
+
 }  // namespace linerlife

@@ -394,10 +394,35 @@ std::string speed_trend_caveat(const std::vector<const Config*>& cases) {
   // Not "draws less power as the speed rises": on other mills its power may
   // rise with the speed, and the note read as contradicting the table beneath
   // it (a review, 2026-12-07: the example ball mill at 14 and 15 rpm)
+  // (-20 % since the power sum of 2e69c47, 2026-12-06: 6,190 -> 4,971 kW;
+  // the note said -13 % and 74-82 % until 2026-12-08)
   return "the cases differ in mill speed, and the layer model (version 1.2) does not give the speed's effect on power "
-         "reliably: on the bundled Qiu mill its power falls by 13 % from 66 to 90 % of critical, where the 2D DEM "
-         "draws +41 % and Morrell's C-model +42 % (version 1.2 within 10 % of the DEM only from about 74 to 82 %) "
+         "reliably: on the bundled Qiu mill its power falls by 20 % from 66 to 90 % of critical, where the 2D DEM "
+         "draws +41 % and Morrell's C-model +42 % (version 1.2 within 10 % of the DEM only from about 76 to 82 %) "
          "(docs/validation/charge.md, \"Operating trends\"). Read the speed's effect on power from [model] charge = "
+         "\"empirical\" or \"dem\"";
+}
+
+std::string filling_trend_caveat(const std::vector<const Config*>& cases) {
+  bool v12 = false;
+  double lo = 0, hi = 0;
+  for (const Config* c : cases) {
+    v12 = v12 || (c->model.charge == "layer" && c->model.variant == "1.2");
+    const double J = c->charge.filling;
+    lo = c == cases.front() ? J : std::min(lo, J);
+    hi = c == cases.front() ? J : std::max(hi, J);
+  }
+  if (!v12 || cases.size() < 2 || !(hi > 1.01 * lo)) return "";
+  // `linerlife charge FILE --model layer|empirical|dem --json` on
+  // data/mills/ball_mill_5m.toml with filling = ball_filling set, and on the
+  // Qiu mill with filling set (2026-12-08; docs/validation/charge.md). A
+  // review's compare of the ball mill at 0.28, 0.35 and 0.42 had the power
+  // fall and the life rise by 64 % with nothing said.
+  return "the cases differ in filling, and the layer model (version 1.2) does not give the filling's effect on power "
+         "reliably: on the example 5 m ball mill its power changes by +1.5 % from 25 to 45 % filling (2,132 -> "
+         "2,164 kW, the highest 2,278 kW at 35 %), where the 2D DEM draws +42 % (1,856 -> 2,628 kW) and Morrell's "
+         "C-model +36 %; on the bundled Qiu mill +6 % from 18 to 36 % against the DEM's +13 % "
+         "(docs/validation/charge.md, \"Operating trends\"). Read the filling's effect on power from [model] charge = "
          "\"empirical\" or \"dem\"";
 }
 

@@ -813,6 +813,57 @@ TEST_CASE("compare of mill speeds by the layer model V-1.2 says its power goes t
   };
   CHECK(power("0.86", "layer") < 0.95 * power("0.70", "layer"));
   CHECK(power("0.86", "empirical") > 1.2 * power("0.70", "empirical"));
+  // the figures it gives: 6,190 -> 4,971 kW from 0.66 to 0.90 (-20 %; it said -13 %, a figure from before the
+  // power sum of 2026-12-06, until 2026-12-08)
+  CHECK(c.find("falls by 20 % from 66 to 90 % of critical") != std::string::npos);
+  CHECK(power("0.90", "layer") / power("0.66", "layer") == Approx(0.80).margin(0.015));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("compare of fillings by the layer model V-1.2 says its power hardly follows them", "[app][compare]") {
+  // A review (2026-12-08): compare of the example ball mill at fillings 0.28,
+  // 0.35 and 0.42 had V-1.2's power fall and the life rise by 64 %, with no
+  // note, where the DEM's power rises with the filling
+  const Config base = load_config_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/ball_mill_5m.toml");
+  Config fuller = base, slightly = base, dem = base, dem_fuller = base, emp = base, emp_fuller = base;
+  fuller.charge.filling = dem_fuller.charge.filling = emp_fuller.charge.filling = 0.45;
+  slightly.charge.filling = 1.005 * base.charge.filling;
+  dem.model.charge = dem_fuller.model.charge = "dem";
+  emp.model.charge = emp_fuller.model.charge = "empirical";
+  const std::string c = filling_trend_caveat({&base, &fuller});
+  CHECK(c.find("the cases differ in filling") != std::string::npos);
+  CHECK(c.find("docs/validation/charge.md, \"Operating trends\"") != std::string::npos);
+  CHECK(filling_trend_caveat({&dem, &base, &dem_fuller}) == c);  // one V-1.2 case is enough
+  CHECK(filling_trend_caveat({&base, &slightly}).empty());
+  CHECK(filling_trend_caveat({&dem, &dem_fuller}).empty());
+  CHECK(filling_trend_caveat({&emp, &emp_fuller}).empty());
+  CHECK(filling_trend_caveat({&base}).empty());
+  // what it says, on the ball mill (filling = ball_filling): V-1.2 within
+  // 5 % from 0.25 to 0.45, Morrell's C-model up by more than 30 %; when a
+  // repair makes V-1.2 follow the filling, this fails and the note is to be
+  // revised
+  const fs::path dir = temp_dir("filling_trend");
+  auto power = [&](const std::string& J, const std::string& model) {
+    std::string t = read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/ball_mill_5m.toml");
+    t = std::regex_replace(t, std::regex("\nfilling = [^\n]*\n"), "\nfilling = " + J + "\n");
+    t = std::regex_replace(t, std::regex("\nball_filling = [^\n]*\n"), "\nball_filling = " + J + "\n");
+    const fs::path cfg = dir / ("b" + J + ".toml");
+    write_file(cfg, t);
+    const RunResult r = run_linerlife("charge " + cfg.string() + " --model " + model + " --json");
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    return parse_json(r.out)["net_power_kw"].num();
+  };
+  CHECK(power("0.45", "layer") / power("0.25", "layer") == Approx(1.015).margin(0.05));
+  CHECK(power("0.45", "empirical") > 1.3 * power("0.25", "empirical"));
+  // and compare says it, on stderr and in --json
+  write_file(dir / "b.toml", read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/ball_mill_5m.toml"));
+  const RunResult r = run_linerlife("compare " + (dir / "b.toml").string() +
+                                    " --vary charge.filling=0.35,0.40 --json --jobs 2");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.err, Catch::Contains("the cases differ in filling"));
+  CHECK_THAT(r.out, Catch::Contains("the cases differ in filling"));
   fs::remove_all(dir);
 }
 
