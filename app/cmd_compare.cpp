@@ -327,6 +327,9 @@ int run_compare(const CompareOptions& o) {
   // fillings compared by the layer model V-1.2: its power hardly follows them
   const std::string filling = filling_trend_caveat(configs);
   if (!filling.empty()) note("linerlife: note: " + filling);
+  // one fraction of critical, several rpm: each case's new liners set its own
+  const std::string resolved = resolved_speed_caveat(configs);
+  if (!resolved.empty()) note("linerlife: note: " + resolved);
   // a measured profile with points closer than a scan resolves: the lives scatter more
   std::string dense;
   for (const Case& k : cases)
@@ -345,6 +348,7 @@ int run_compare(const CompareOptions& o) {
           .set("end_date", iso_date(k.result.relining_date))
           .set("operating_hours", k.result.operating_hours)
           .set("tonnes", k.result.tonnes)
+          .set("speed_rpm", k.config.mill.speed_rpm)  // as resolved (speed_fraction_critical: with its new liners)
           .set("mean_net_power_kw", k.mean_power_kw)
           .set("final_net_power_kw", k.final_power_kw)
           .set("mean_direct_impact_fraction", k.mean_direct_impacts)
@@ -358,7 +362,7 @@ int run_compare(const CompareOptions& o) {
       }
       arr.push(j);
     }
-    const Json all = caveats_json(std::vector<std::string>{ranking, speed, filling, dense});
+    const Json all = caveats_json(std::vector<std::string>{ranking, speed, filling, resolved, dense});
     std::cout << Json::object().set("cases", arr).set("caveats", all).dump() << "\n";
   } else {
     size_t w = 36;
@@ -396,6 +400,7 @@ int run_compare(const CompareOptions& o) {
         const std::string g = fmt::format("/cases/{}", i);
         h5.group(g);
         h5.attr(g, "label", k.label);
+        h5.attr(g, "speed_rpm", k.config.mill.speed_rpm);  // as resolved
         // --vary: the case's values, one line per key of /cases' varied_keys
         if (!k.varied.empty()) {
           std::string values;
@@ -413,7 +418,7 @@ int run_compare(const CompareOptions& o) {
         for (size_t a = 0; a < cases.front().varied.size(); ++a) keys += (a ? "\n" : "") + cases.front().varied[a].first;
         h5.attr("/cases", "varied_keys", keys);
       }
-      const std::string all = caveat_lines({ranking, speed, filling, dense});
+      const std::string all = caveat_lines({ranking, speed, filling, resolved, dense});
       if (!all.empty()) h5.attr("/cases", "caveat", all);
       h5.dataset("/cases/operating_hours", hours, {hours.size()}, "h");
       h5.dataset("/cases/mean_net_power_kw", mean_p, {mean_p.size()}, "kW");

@@ -218,4 +218,9 @@ std::string speed_trend_caveat(const std::vector<const Config*>& cases);
 /// runs layer V-1.2 and the cases' fillings differ by more than 1 %.
 std::string filling_trend_caveat(const std::vector<const Config*>& cases);
 
+/// The note of a comparison whose cases all give the speed as the same
+/// fraction of critical, which each resolves with its own new liners' diameter
+/// to a different rpm. Non-empty when those rpm differ.
+std::string resolved_speed_caveat(const std::vector<const Config*>& cases);
+
 }  // namespace linerlife

@@ -403,6 +403,24 @@ std::string speed_trend_caveat(const std::vector<const Config*>& cases) {
          "\"empirical\" or \"dem\"";
 }
 
+std::string resolved_speed_caveat(const std::vector<const Config*>& cases) {
+  if (cases.size() < 2) return "";
+  double lo = 0, hi = 0;
+  for (const Config* c : cases) {
+    if (!c->speed_fraction_critical) return "";  // a case at a given rpm: the cases vary the speed themselves
+    lo = c == cases.front() ? c->mill.speed_rpm : std::min(lo, c->mill.speed_rpm);
+    hi = c == cases.front() ? c->mill.speed_rpm : std::max(hi, c->mill.speed_rpm);
+    if (*c->speed_fraction_critical != *cases.front()->speed_fraction_critical) return "";  // varied on purpose
+  }
+  if (!(hi > lo * (1 + 1e-9))) return "";
+  // a review (2026-12-08): lifters 0.15, 0.2 and 0.23 m at 0.76 of critical ran
+  // at 12.14 to 12.19 rpm, which neither the output nor the per-case files said
+  return fmt::format("the speed is given as a fraction of critical ([mill] speed_fraction_critical = {:g}), which each "
+                     "case resolves with the diameter inside its own new liners: the cases run at {:.4g} to {:.4g} rpm "
+                     "({:+.2f} %). A mill's drive turns at one speed: give [mill] speed_rpm to compare them at it",
+                     *cases.front()->speed_fraction_critical, lo, hi, 100.0 * (hi / lo - 1.0));
+}
+
 std::string filling_trend_caveat(const std::vector<const Config*>& cases) {
   bool v12 = false;
   double lo = 0, hi = 0;

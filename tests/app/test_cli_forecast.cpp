@@ -820,6 +820,41 @@ TEST_CASE("compare of mill speeds by the layer model V-1.2 says its power goes t
   fs::remove_all(dir);
 }
 
+TEST_CASE("compare says when one fraction of critical runs its cases at different speeds", "[app][compare]") {
+  // A review (2026-12-08): lifters of 0.15, 0.2 and 0.23 m at 0.76 of critical
+  // ran at 12.14-12.19 rpm (each case's speed from its own new liners), and
+  // nothing said so
+  const Config ball = load_config_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/ball_mill_5m.toml");
+  REQUIRE(ball.speed_fraction_critical);  // the example ball mill gives its speed so
+  Config taller = ball, faster = ball, rpm = ball, rpm_taller = ball;
+  taller.mill.speed_rpm *= 1.004;  // what a taller lifter's smaller diameter resolves to
+  faster.speed_fraction_critical = 0.8;
+  faster.mill.speed_rpm *= 0.8 / 0.75;
+  rpm.speed_fraction_critical.reset();
+  rpm_taller.speed_fraction_critical.reset();
+  const std::string c = resolved_speed_caveat({&ball, &taller});
+  CHECK(c.find("speed_fraction_critical = 0.75") != std::string::npos);
+  CHECK(c.find(fmt::format("the cases run at {:.4g} to {:.4g} rpm (+0.40 %)", ball.mill.speed_rpm,
+                           taller.mill.speed_rpm)) != std::string::npos);
+  CHECK(c.find("give [mill] speed_rpm") != std::string::npos);
+  CHECK(resolved_speed_caveat({&ball, &ball}).empty());    // the same speed
+  CHECK(resolved_speed_caveat({&ball, &faster}).empty());  // the speed varied on purpose
+  CHECK(resolved_speed_caveat({&rpm, &rpm_taller}).empty());
+  CHECK(resolved_speed_caveat({&ball}).empty());
+  // compare gives each case's speed as resolved, and the note
+  const fs::path dir = temp_dir("resolved_speed");
+  write_file(dir / "b.toml", read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/ball_mill_5m.toml"));
+  const RunResult r = run_linerlife("compare " + (dir / "b.toml").string() +
+                                    " --vary liner.lifter_height_m=0.09,0.12 --json --jobs 2");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto cases = parse_json(r.out)["cases"].items();
+  REQUIRE(cases.size() == 2);
+  CHECK(cases[1]["speed_rpm"].num() > cases[0]["speed_rpm"].num());  // the taller lifter: less room, faster
+  CHECK_THAT(r.err, Catch::Contains("the speed is given as a fraction of critical"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("compare of fillings by the layer model V-1.2 says its power hardly follows them", "[app][compare]") {
   // A review (2026-12-08): compare of the example ball mill at fillings 0.28,
   // 0.35 and 0.42 had V-1.2's power fall and the life rise by 64 %, with no
