@@ -260,15 +260,20 @@ int run_charge(const ChargeOptions& o) {
     if (std::isfinite(I.alt_net_power_kw))
       std::cout << fmt::format("  {:<24} {:>9.1f} kW\n",
                                layer ? "energy-rate net power" : "Hogg-Fuerstenau net", I.alt_net_power_kw);
-    std::cout << fmt::format("  layers / trajectories    {:>9} / {}\n", I.n_layers,
-                             I.n_trajectories >= 0 ? std::to_string(I.n_trajectories) : "n/a");
+    // the indicators (docs/models/indicators.md), not the model's rings, whose
+    // speeds follow: "9 / 6" above ten speeds read as a contradiction (a review,
+    // 2026-12-08)
+    std::cout << fmt::format("  layers / trajectories    {:>9} / {} (en-masse depth through the centre of mass / "
+                             "streams in flight)\n",
+                             I.n_layers, I.n_trajectories >= 0 ? std::to_string(I.n_trajectories) : "n/a");
     std::cout << fmt::format("  charge area (en masse)   {:>9.3f} m2\n", I.charge_area_m2);
     if (flights)
       std::cout << fmt::format("  direct liner impacts     {:>9.3f} of the charge landing from flight\n",
                                I.direct_impact_fraction);
     std::string sp;
     for (double v : I.layer_speed_rpm) sp += fmt::format(" {:.2f}", v);
-    std::cout << fmt::format("  layer speeds [rpm]      {}\n", sp.empty() ? " n/a" : sp);
+    std::cout << fmt::format("  layer speeds [rpm]      {}{}\n", sp.empty() ? " n/a" : sp,
+                             sp.empty() ? "" : fmt::format(" ({} rings, outermost first)", I.layer_speed_rpm.size()));
     if (layer || r.stats.particle_steps_per_s > 0)
       std::cout << fmt::format("  simulated {:.1f} s in {:.3f} s wall: {:.3g} x real time ({} elements, step {:.3g} s)\n",
                                r.stats.simulated_s, r.stats.wall_s, r.stats.realtime_ratio, r.stats.elements,

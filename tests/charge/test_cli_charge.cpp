@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
@@ -142,6 +143,15 @@ TEST_CASE("charge's summary says how each model's gross power is made up", "[cha
     CHECK((r.out.find("Hogg-Fuerstenau net") != std::string::npos) == (model == "empirical"));
     CHECK((r.out.find("energy-rate net power") != std::string::npos) == (model == "layer"));
     CHECK(r.out.find("nan") == std::string::npos);
+    // the count of layers is the indicator, the speeds the model's rings: each
+    // line says which (a review, 2026-12-08: "7 / 4" above eight speeds)
+    const std::regex speeds("layer speeds \\[rpm\\] +((?:[0-9.]+ )+)\\(([0-9]+) rings, outermost first\\)\n");
+    REQUIRE(std::regex_search(r.out, m, speeds));
+    std::istringstream in(m[1].str());
+    int n = 0;
+    for (double v; in >> v;) ++n;
+    CHECK(n == std::stoi(m[2]));
+    CHECK_THAT(r.out, Catch::Contains(" (en-masse depth through the centre of mass / streams in flight)\n"));
   }
 }
 
