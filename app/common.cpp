@@ -411,6 +411,7 @@ std::string resolved_speed_caveat(const std::vector<const Config*>& cases) {
     lo = c == cases.front() ? c->mill.speed_rpm : std::min(lo, c->mill.speed_rpm);
     hi = c == cases.front() ? c->mill.speed_rpm : std::max(hi, c->mill.speed_rpm);
     if (*c->speed_fraction_critical != *cases.front()->speed_fraction_critical) return "";  // varied on purpose
+    if (c->mill.diameter_m != cases.front()->mill.diameter_m) return "";  // mills of other sizes: the right basis
   }
   if (!(hi > lo * (1 + 1e-9))) return "";
   // a review (2026-12-08): lifters 0.15, 0.2 and 0.23 m at 0.76 of critical ran

@@ -841,6 +841,9 @@ TEST_CASE("compare says when one fraction of critical runs its cases at differen
   CHECK(resolved_speed_caveat({&ball, &faster}).empty());  // the speed varied on purpose
   CHECK(resolved_speed_caveat({&rpm, &rpm_taller}).empty());
   CHECK(resolved_speed_caveat({&ball}).empty());
+  Config wider = taller;
+  wider.mill.diameter_m *= 1.04;  // mills of other sizes compared at one fraction of critical: no note
+  CHECK(resolved_speed_caveat({&ball, &wider}).empty());
   // compare gives each case's speed as resolved, and the note
   const fs::path dir = temp_dir("resolved_speed");
   write_file(dir / "b.toml", read_file(std::string(LINERLIFE_SOURCE_DIR) + "/data/mills/ball_mill_5m.toml"));
