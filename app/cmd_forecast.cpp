@@ -187,7 +187,10 @@ int run_forecast_command(const ForecastOptions& o) {
         .set("crest_thickness_m", crest).set("liner_mass_kg_per_m", mass).set("min_thickness_m", thin);
     if (c.liner.hi_lo) {  // the low lifters (segment 1), as the high ones above
       std::vector<double> low_h, low_fa;
-      for (const LifeRecord& r : f.history) low_h.push_back(r.low_lifter_height_m), low_fa.push_back(r.low_face_angle_leading_deg);
+      for (const LifeRecord& r : f.history) {
+        low_h.push_back(r.low_lifter_height_m);
+        low_fa.push_back(r.low_face_angle_leading_deg);
+      }
       hist.set("low_lifter_height_m", low_h).set("low_face_angle_leading_deg", low_fa);
     }
     Json j = Json::object();
@@ -257,7 +260,8 @@ int run_forecast_command(const ForecastOptions& o) {
       std::cout << "  leading face angle       n/a (no lifter)\n";
     if (c.liner.hi_lo)
       std::cout << fmt::format("  low leading face angle   {:>10} deg -> {} deg\n",
-                               num(first.low_face_angle_leading_deg, "{:.1f}"), num(last.low_face_angle_leading_deg, "{:.1f}"));
+                               num(first.low_face_angle_leading_deg, "{:.1f}"),
+                               num(last.low_face_angle_leading_deg, "{:.1f}"));
     std::cout << fmt::format("  thinnest point           {:>10.4f} m  -> {:.4f} m\n", first.min_thickness_m,
                              last.min_thickness_m);
     // to the kW on a plant mill, to three figures on a laboratory one (a

@@ -379,16 +379,22 @@ std::string design_ranking_caveat(const std::vector<const Config*>& cases) {
          "charge = \"dem\", calibrated wear) before choosing";
 }
 
-std::string speed_trend_caveat(const std::vector<const Config*>& cases) {
+/// Whether some case runs layer V-1.2 and the cases' values of `of` differ by
+/// more than 1 % (the condition of the two trend notes below).
+template <class F>
+bool v12_cases_differ(const std::vector<const Config*>& cases, F of) {
   bool v12 = false;
   double lo = 0, hi = 0;
   for (const Config* c : cases) {
     v12 = v12 || (c->model.charge == "layer" && c->model.variant == "1.2");
-    const double rpm = c->mill.speed_rpm;
-    lo = c == cases.front() ? rpm : std::min(lo, rpm);
-    hi = c == cases.front() ? rpm : std::max(hi, rpm);
+    lo = c == cases.front() ? of(*c) : std::min(lo, of(*c));
+    hi = c == cases.front() ? of(*c) : std::max(hi, of(*c));
   }
-  if (!v12 || cases.size() < 2 || !(hi > 1.01 * lo)) return "";
+  return v12 && cases.size() >= 2 && hi > 1.01 * lo;
+}
+
+std::string speed_trend_caveat(const std::vector<const Config*>& cases) {
+  if (!v12_cases_differ(cases, [](const Config& c) { return c.mill.speed_rpm; })) return "";
   // bench/operating_trend.py on the Qiu mill, 66 to 90 % of critical (the
   // layer column since 2026-12-06: `linerlife charge` at each speed)
   // Not "draws less power as the speed rises": on other mills its power may
@@ -423,15 +429,7 @@ std::string resolved_speed_caveat(const std::vector<const Config*>& cases) {
 }
 
 std::string filling_trend_caveat(const std::vector<const Config*>& cases) {
-  bool v12 = false;
-  double lo = 0, hi = 0;
-  for (const Config* c : cases) {
-    v12 = v12 || (c->model.charge == "layer" && c->model.variant == "1.2");
-    const double J = c->charge.filling;
-    lo = c == cases.front() ? J : std::min(lo, J);
-    hi = c == cases.front() ? J : std::max(hi, J);
-  }
-  if (!v12 || cases.size() < 2 || !(hi > 1.01 * lo)) return "";
+  if (!v12_cases_differ(cases, [](const Config& c) { return c.charge.filling; })) return "";
   // `linerlife charge FILE --model layer|empirical|dem --json` on
   // data/mills/ball_mill_5m.toml with filling = ball_filling set, and on the
   // Qiu mill with filling set (2026-12-08; docs/validation/charge.md). A

@@ -387,7 +387,8 @@ void check_and_resolve(Config& c) {
               fmt::format("speed_rpm = {} is only {:.3g} of the critical speed ({} rpm for the diameter inside the "
                           "liners, {:.4f} m): below {} of critical the charge does not tumble, it creeps up the shell "
                           "and slides back; allowed {} <= speed_rpm < {}",
-                          c.mill.speed_rpm, phi, limit_text(nc, false, 5), lm.effective_diameter_m, kMinSpeedFractionCritical,
+                          c.mill.speed_rpm, phi, limit_text(nc, false, 5), lm.effective_diameter_m,
+                          kMinSpeedFractionCritical,
                           limit_text(kMinSpeedFractionCritical * nc, true), limit_text(nc, false, 5)));
     if (phi >= 1.0)
       fail_at(c, "mill.speed_rpm",

@@ -1150,6 +1150,11 @@ CheckpointProblem checkpoint_problem(const ForecastCheckpoint& c, const Forecast
       if (!(std::abs(g.v) <= R))
         return bad(g.name, fmt::format("record {}: {} m; allowed a finite length within the shell radius ({} m)", i,
                                        g.v, R));
+    // the low lifter of a hi-lo ring as the high one's; NaN on a uniform ring
+    if (!(std::isnan(r.low_lifter_height_m) || std::abs(r.low_lifter_height_m) <= R))
+      return bad("history_low_lifter_height_m",
+                 fmt::format("record {}: {} m; allowed a finite length within the shell radius ({} m), or NaN", i,
+                             r.low_lifter_height_m, R));
     if (!(r.liner_mass_kg_per_m >= 0 && std::isfinite(r.liner_mass_kg_per_m)))
       return bad("history_liner_mass_kg_per_m", fmt::format("record {}: {} kg/m; allowed finite and >= 0", i,
                                                             r.liner_mass_kg_per_m));
@@ -1159,7 +1164,6 @@ CheckpointProblem checkpoint_problem(const ForecastCheckpoint& c, const Forecast
                            Gauge{"history_toe_deg", r.toe_deg}, Gauge{"history_shoulder_deg", r.shoulder_deg},
                            Gauge{"history_direct_impact_fraction", r.direct_impact_fraction},
                            Gauge{"history_impact_fraction", r.impact_fraction},
-                           Gauge{"history_low_lifter_height_m", r.low_lifter_height_m},
                            Gauge{"history_low_face_angle_leading_deg", r.low_face_angle_leading_deg}})
       if (std::isinf(g.v) || std::abs(g.v) > 1e9)
         return bad(g.name, fmt::format("record {}: {}; allowed a finite value of at most 1e9 (or NaN: not known)", i, g.v));

@@ -104,7 +104,8 @@ WearModel make_wear_model(const WearSpec& spec, const ChargeModelEntry& charge_m
                        fmt::format("[wear] laws: wear law \"{}\" needs the sliding loads on the liner, but [model] "
                                    "charge = \"{}\" gives none; allowed with it: {}; or a charge model that gives "
                                    "them ({})",
-                                   name, charge_model.name, allowed, models_with(&ChargeModelEntry::resolves_abrasion)));
+                                   name, charge_model.name, allowed,
+                                   models_with(&ChargeModelEntry::resolves_abrasion)));
     if (name == "abrasion/radziszewski") {
       m.radziszewski = true;
       m.radziszewski_tan_theta = law_parameter(spec, param(e, "radziszewski_tan_theta"));
